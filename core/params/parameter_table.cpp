@@ -1,0 +1,78 @@
+#include "core/params/parameter_table.h"
+
+namespace tunnelmap {
+
+const char* stage_name(Stage s) {
+  switch (s) {
+    case Stage::Cloud: return "cloud";
+    case Stage::Normals: return "normals";
+    case Stage::Planes: return "planes";
+    case Stage::Tunnel: return "tunnel";
+  }
+  return "?";
+}
+
+const std::vector<ParameterSpec>& parameter_table() {
+  // clang-format off
+  static const std::vector<ParameterSpec> table = {
+    // key, unit, default, min, max, step, integer, stage, label, description
+    {"cloud.max_range_m", "m", 5.0, 0.5, 12.0, 0.1, false, Stage::Cloud, "Max range",
+     "Max usable range from the sensing plane; farther pixels are ignored (paper: 5 m)"},
+    {"cloud.min_range_m", "m", 0.3, 0.0, 2.0, 0.05, false, Stage::Cloud, "Min range",
+     "Pixels nearer than this are ignored (below the sensor's working range)"},
+    {"normals.smoothing_px", "px", 10, 3, 41, 1, true, Stage::Normals, "Normal window",
+     "Side of the integral-image smoothing window used for per-pixel normals (Holzer et al.)"},
+    {"normals.max_depth_change", "", 0.02, 0.002, 0.2, 0.001, false, Stage::Normals,
+     "Depth-change limit",
+     "Relative depth jump (fraction of depth) across the window that marks an edge: no normal there"},
+    {"grow.angle_deg", "deg", 4.0, 0.5, 30.0, 0.1, false, Stage::Planes, "Normal angle (lambda)",
+     "Max angle between a point's normal and the plane's mean normal (eq. 2, paper: 4 deg)"},
+    {"grow.distance_mm", "mm", 15.0, 1.0, 100.0, 0.5, false, Stage::Planes,
+     "Point-to-plane (epsilon)", "Max point-to-plane distance to join a plane (eq. 2, paper: 15 mm)"},
+    {"grow.candidate_distance_mm", "mm", 40.0, 5.0, 300.0, 1.0, false, Stage::Planes,
+     "Candidate distance", "Max 3D distance from a region point to a candidate neighbour (paper: 40 mm)"},
+    {"grow.neighbourhood_n", "px", 5, 3, 9, 2, true, Stage::Planes, "Neighbourhood n",
+     "Candidates are the n*n-1 pixels around a region point; odd (paper: n = 5)"},
+    {"grow.min_points", "points", 40, 3, 100000, 1, true, Stage::Planes, "Min points",
+     "Fewest points that constitute a plane (paper: 40)"},
+    {"grow.min_area_m2", "m2", 0.004, 0.0, 1.0, 0.001, false, Stage::Planes, "Min area",
+     "Smallest allowable plane area (paper: 0.004 m2)"},
+    {"grow.refit_normal", "", 1, 0, 1, 1, true, Stage::Planes, "Refit normal (PCA)",
+     "1: report each plane's least-squares normal from its points; 0: the grown mean normal (eq. 3)"},
+    {"tunnel.class_angle_deg", "deg", 35.0, 5.0, 45.0, 1.0, false, Stage::Tunnel, "Class cone",
+     "A plane joins a wall class when its normal is within this angle of that class's direction"},
+    {"tunnel.outlier_bin_deg", "deg", 1.0, 0.1, 10.0, 0.1, false, Stage::Tunnel, "Histogram bin",
+     "Bin width of the normal-deviation histogram used to reject outlier planes per class"},
+    {"tunnel.outlier_max_deg", "deg", 8.0, 1.0, 45.0, 0.5, false, Stage::Tunnel, "Outlier limit",
+     "Planes whose normal deviates more than this from the class mean are always outliers"},
+    {"tunnel.zone_cluster_mm", "mm", 10.0, 1.0, 100.0, 0.5, false, Stage::Tunnel, "Zone cluster gap",
+     "Zone planes whose positions differ by less than this are one zone (paper: 10 mm)"},
+    {"tunnel.min_cluster_points", "points", 300, 10, 100000, 10, true, Stage::Tunnel,
+     "Min zone support", "Fewest points a zone cluster needs to bound the tunnel"},
+    {"tunnel.context_tolerance_mm", "mm", 40.0, 1.0, 500.0, 1.0, false, Stage::Tunnel,
+     "Context tolerance",
+     "Max width/height change from the previous scans' context in a sequence (paper: 40 mm)"},
+    {"tunnel.max_pair_angle_deg", "deg", 10.0, 1.0, 45.0, 0.5, false, Stage::Tunnel,
+     "Parallel-pair angle", "Max angle between opposite walls (left/right, top/bottom) to be a pair"},
+    {"tunnel.width_min_m", "m", 0.3, 0.05, 10.0, 0.01, false, Stage::Tunnel, "Width min",
+     "Template prior: smallest plausible tunnel width"},
+    {"tunnel.width_max_m", "m", 3.0, 0.1, 20.0, 0.01, false, Stage::Tunnel, "Width max",
+     "Template prior: largest plausible tunnel width"},
+    {"tunnel.height_min_m", "m", 0.3, 0.05, 10.0, 0.01, false, Stage::Tunnel, "Height min",
+     "Template prior: smallest plausible tunnel height"},
+    {"tunnel.height_max_m", "m", 3.0, 0.1, 20.0, 0.01, false, Stage::Tunnel, "Height max",
+     "Template prior: largest plausible tunnel height"},
+    {"zones.forbidden_band_m", "m", 0.15, 0.0, 1.0, 0.005, false, Stage::Tunnel, "Forbidden band",
+     "Width of the riveted edge band along each tunnel corner (prior knowledge)"},
+  };
+  // clang-format on
+  return table;
+}
+
+const ParameterSpec* find_parameter(const std::string& key) {
+  for (const auto& spec : parameter_table())
+    if (spec.key == key) return &spec;
+  return nullptr;
+}
+
+}  // namespace tunnelmap

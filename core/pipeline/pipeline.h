@@ -1,0 +1,62 @@
+#pragma once
+// Pipeline: runs the stages in order on one frame, each stage timing itself. Results of earlier
+// stages are kept so a parameter change re-runs only the stages from the one it affects.
+#include <memory>
+#include <optional>
+
+#include "core/frame/depth_frame.h"
+#include "core/frame/organized_cloud.h"
+#include "core/params/parameters.h"
+#include "core/planes/plane_segment.h"
+#include "core/normals/cloud_builder.h"
+#include "core/normals/integral_normals.h"
+#include "core/planes/plane_growing.h"
+#include "core/tunnel/tunnel_detector.h"
+#include "core/tunnel/tunnel_map.h"
+
+namespace tunnelmap {
+
+// Options derived from Parameters (the table is the single source of truth).
+CloudOptions cloud_options(const Parameters& p);
+NormalOptions normal_options(const Parameters& p);
+GrowOptions grow_options(const Parameters& p);
+TunnelOptions tunnel_options(const Parameters& p);
+
+// The "up" direction (towards the roof) in the camera frame, by precedence: world up through
+// the frame's pose; else the user's camera-frame vector; else image-up (-Y).
+Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world_up,
+                           const std::optional<Eigen::Vector3d>& camera_up);
+
+struct FrameResult {
+  OrganizedCloud cloud;
+  PlaneSegments planes;
+  TunnelMap map;
+  StageTimings timings_ms;  // "cloud", "normals", "planes", "tunnel", "total"
+};
+
+class Pipeline {
+ public:
+  explicit Pipeline(Parameters params = Parameters());
+
+  const Parameters& params() const { return params_; }
+  void set_params(const Parameters& params) { params_ = params; }
+  void set_world_up(const Eigen::Vector3d& up) { world_up_ = up.normalized(); }
+  void set_camera_up(const std::optional<Eigen::Vector3d>& up) { camera_up_ = up; }
+
+  // Runs everything from stage `from` on. Stages before `from` reuse `result`'s contents,
+  // which must come from an earlier run on the same frame.
+  void run(const DepthFrame& frame, FrameResult& result, TunnelContext* context = nullptr,
+           Stage from = Stage::Cloud) const;
+  FrameResult run(const DepthFrame& frame, TunnelContext* context = nullptr) const {
+    FrameResult r;
+    run(frame, r, context);
+    return r;
+  }
+
+ private:
+  Parameters params_;
+  Eigen::Vector3d world_up_ = Eigen::Vector3d::UnitZ();
+  std::optional<Eigen::Vector3d> camera_up_;
+};
+
+}  // namespace tunnelmap

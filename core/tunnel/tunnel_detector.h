@@ -1,0 +1,44 @@
+#pragma once
+// Stage 4: robust tunnel detection (paper section 2.2): classify planes into wall classes,
+// reject outliers by histogram, cluster zone positions, fit the rectangular template.
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/planes/plane_segment.h"
+#include "core/tunnel/tunnel_map.h"
+
+namespace tunnelmap {
+
+struct TunnelOptions {
+  double class_angle_deg = 35.0;
+  double outlier_bin_deg = 1.0;
+  double outlier_max_deg = 8.0;
+  double zone_cluster_m = 0.010;
+  int min_cluster_points = 300;
+  double context_tolerance_m = 0.040;
+  double max_pair_angle_deg = 10.0;
+  double width_min_m = 0.3, width_max_m = 3.0;
+  double height_min_m = 0.3, height_max_m = 3.0;
+  double forbidden_band_m = 0.15;
+};
+
+// Context of previous scans in a sequence: accepted widths/heights. A new frame must agree with
+// it within context_tolerance_m.
+class TunnelContext {
+ public:
+  void accept(const TunnelMap& map);
+  bool empty() const { return widths_.empty(); }
+  double width_m() const;   // median of accepted widths
+  double height_m() const;  // median of accepted heights
+  void clear() { widths_.clear(); heights_.clear(); }
+
+ private:
+  std::vector<double> widths_, heights_;
+};
+
+// `up_camera`: unit vector towards the roof, in the camera frame. Everything in the returned map
+// is in the camera frame. `context` may be null (single frame).
+TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                        const TunnelOptions& options, const TunnelContext* context);
+
+}  // namespace tunnelmap

@@ -1,0 +1,54 @@
+#include "core/util/atomic_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "core/util/error.h"
+
+namespace tunnelmap {
+namespace fs = std::filesystem;
+
+namespace {
+std::string temporary_name(const std::string& path) {
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  const fs::path p(path);
+  // Keep the extension last: OpenCV and VTK choose the format from it.
+  return (p.parent_path() / (p.stem().string() + ".tmp-" + std::to_string(rng() % 1000000) +
+                             p.extension().string()))
+      .string();
+}
+}  // namespace
+
+void write_path_atomically(const std::string& path,
+                           const std::function<void(const std::string&)>& write) {
+  const fs::path parent = fs::path(path).parent_path();
+  if (!parent.empty() && !fs::is_directory(parent))
+    throw InputError(path, "cannot write: folder '" + parent.string() + "' does not exist");
+  const std::string tmp = temporary_name(path);
+  try {
+    write(tmp);
+    if (!fs::exists(tmp)) throw InputError(path, "cannot write: the writer produced no file");
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) throw InputError(path, "cannot write: " + ec.message());
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw;
+  }
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write) {
+  write_path_atomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path, "cannot write: cannot create a file in that folder");
+    write(out);
+    out.flush();
+    if (!out) throw InputError(path, "cannot write: write error (disk full?)");
+  });
+}
+
+}  // namespace tunnelmap
