@@ -1,3 +1,41 @@
-// tunnelmap-cli entry point (placeholder while commands land).
+// tunnelmap-cli: headless front end of the pipeline. Exit codes: 0 ok, 2 bad usage,
+// 3 unreadable or invalid input; every error is one line on stderr naming file and problem.
 #include <iostream>
-int main() { std::cout << "tunnelmap-cli\n"; return 0; }
+
+#include "app/cli/commands.h"
+#include "core/util/error.h"
+
+int main(int argc, char** argv) {
+  using namespace tunnelmap;
+  CLI::App app{"TunnelMap: maps rectangular steel tunnels from depth frames (PG&C)",
+               "tunnelmap-cli"};
+  app.set_version_flag("--version", std::string("tunnelmap-cli ") + TUNNELMAP_VERSION);
+  app.require_subcommand(1);
+  cli::CliContext ctx;
+  cli::add_detect_command(app, ctx);
+  cli::add_planes_command(app, ctx);
+  cli::add_params_command(app, ctx);
+  cli::add_simulate_command(app, ctx);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "tunnelmap-cli: " << e.what() << " (see --help)\n";
+    return 2;
+  } catch (const ParameterError& e) {
+    std::cerr << "tunnelmap-cli: " << e.what() << "\n";
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "tunnelmap-cli: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "tunnelmap-cli: internal error: " << e.what() << "\n";
+    return 4;
+  }
+  return ctx.exit_code;
+}

@@ -1,0 +1,18 @@
+#pragma once
+// Each tunnelmap-cli subcommand lives in its own cmd_*.cpp and registers itself here.
+// A command's callback stores its exit code in `CliContext::exit_code`; errors are thrown
+// (InputError -> exit 3, ParameterError / CLI11 errors -> exit 2) and reported by main().
+#include <CLI/CLI.hpp>
+
+namespace tunnelmap::cli {
+
+struct CliContext {
+  int exit_code = 0;
+};
+
+void add_detect_command(CLI::App& app, CliContext& ctx);
+void add_planes_command(CLI::App& app, CliContext& ctx);
+void add_params_command(CLI::App& app, CliContext& ctx);
+void add_simulate_command(CLI::App& app, CliContext& ctx);
+
+}  // namespace tunnelmap::cli
