@@ -1,0 +1,85 @@
+#include "core/pipeline/pipeline.h"
+
+#include <chrono>
+
+namespace tunnelmap {
+
+CloudOptions cloud_options(const Parameters& p) {
+  CloudOptions o;
+  o.min_range_m = p.get("cloud.min_range_m");
+  o.max_range_m = p.get("cloud.max_range_m");
+  return o;
+}
+
+NormalOptions normal_options(const Parameters& p) {
+  NormalOptions o;
+  o.smoothing_px = p.get_int("normals.smoothing_px");
+  o.max_depth_change = p.get("normals.max_depth_change");
+  return o;
+}
+
+GrowOptions grow_options(const Parameters& p) {
+  GrowOptions o;
+  o.angle_deg = p.get("grow.angle_deg");
+  o.distance_m = p.get("grow.distance_mm") / 1000.0;
+  o.candidate_distance_m = p.get("grow.candidate_distance_mm") / 1000.0;
+  o.neighbourhood_n = p.get_int("grow.neighbourhood_n");
+  o.min_points = p.get_int("grow.min_points");
+  o.min_area_m2 = p.get("grow.min_area_m2");
+  o.refit_normal = p.get_int("grow.refit_normal") != 0;
+  return o;
+}
+
+TunnelOptions tunnel_options(const Parameters& p) {
+  TunnelOptions o;
+  o.class_angle_deg = p.get("tunnel.class_angle_deg");
+  o.outlier_bin_deg = p.get("tunnel.outlier_bin_deg");
+  o.outlier_max_deg = p.get("tunnel.outlier_max_deg");
+  o.zone_cluster_m = p.get("tunnel.zone_cluster_mm") / 1000.0;
+  o.min_cluster_points = p.get_int("tunnel.min_cluster_points");
+  o.context_tolerance_m = p.get("tunnel.context_tolerance_mm") / 1000.0;
+  o.max_pair_angle_deg = p.get("tunnel.max_pair_angle_deg");
+  o.width_min_m = p.get("tunnel.width_min_m");
+  o.width_max_m = p.get("tunnel.width_max_m");
+  o.height_min_m = p.get("tunnel.height_min_m");
+  o.height_max_m = p.get("tunnel.height_max_m");
+  o.forbidden_band_m = p.get("zones.forbidden_band_m");
+  return o;
+}
+
+Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world_up,
+                           const std::optional<Eigen::Vector3d>& camera_up) {
+  if (frame.pose) return (frame.pose->linear().transpose() * world_up).normalized();
+  if (camera_up && camera_up->norm() > 0) return camera_up->normalized();
+  return -Eigen::Vector3d::UnitY();  // image-up: camera y points down the image
+}
+
+Pipeline::Pipeline(Parameters params) : params_(std::move(params)) {}
+
+void Pipeline::run(const DepthFrame& frame, FrameResult& result, TunnelContext* context,
+                   Stage from) const {
+  const auto start = std::chrono::steady_clock::now();
+  if (from <= Stage::Cloud) {
+    result.cloud.timings_ms.clear();
+    StageTimer t(result.cloud.timings_ms, "cloud");
+    build_cloud(frame, cloud_options(params_), result.cloud);
+  }
+  if (from <= Stage::Normals) {
+    result.cloud.timings_ms.erase("normals");
+    estimate_normals(normal_options(params_), result.cloud);
+  }
+  if (from <= Stage::Planes) result.planes = extract_planes(result.cloud, grow_options(params_));
+  result.map = detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_),
+                             tunnel_options(params_), context);
+  if (context && result.map.detected) context->accept(result.map);
+
+  StageTimings& t = result.timings_ms;
+  t.clear();
+  t["cloud"] = result.cloud.timings_ms.count("cloud") ? result.cloud.timings_ms.at("cloud") : 0.0;
+  t["normals"] = result.cloud.timings_ms.count("normals") ? result.cloud.timings_ms.at("normals") : 0.0;
+  t["planes"] = result.planes.timings_ms.count("planes") ? result.planes.timings_ms.at("planes") : 0.0;
+  t["tunnel"] = result.map.timings_ms.count("tunnel") ? result.map.timings_ms.at("tunnel") : 0.0;
+  t["total"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace tunnelmap
