@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <Eigen/Geometry>
@@ -10,75 +11,86 @@ namespace tunnelmap {
 
 namespace {
 
-// Box sums over a side-`s` window of 5 channels (x, y, z, valid count, edge count), computed
-// as a separable running sum: the same box means as Holzer's summed-area tables, but the
-// running sums stay small, so float storage keeps sub-millimetre precision.
-struct BoxSums {
-  int w = 0, h = 0;
-  std::vector<float> data;  // 5 floats per pixel
-  const float* at(int u, int v) const {
-    static const float kEmpty[5] = {0, 0, 0, 0, 0};  // outside the image: no support
-    if (u < 0 || v < 0 || u >= w || v >= h) return kEmpty;
-    return data.data() + (static_cast<std::size_t>(v) * w + u) * 5;
-  }
-};
-
-void box_filter(const std::vector<float>& in, int w, int h, int s, std::vector<float>& tmp,
-                BoxSums& out) {
-  const int r0 = s / 2, r1 = s - 1 - r0;  // window [u - r0, u + r1]
-  tmp.assign(in.size(), 0.0f);
+// Separable box sum of 4 float channels (x, y, z, valid) over a side-`s` window. Running sums
+// are re-anchored every 64 pixels so float rounding cannot drift: same box means as Holzer's
+// summed-area tables, but in float and in two cache-friendly passes.
+void box_sum4(const std::vector<float>& in, int w, int h, int s, std::vector<float>& tmp,
+              std::vector<float>& out) {
+  const int r0 = s / 2, r1 = s - 1 - r0;  // window [x - r0, x + r1]
+  tmp.resize(in.size());
+  out.resize(in.size());
+  // Rows.
   for (int v = 0; v < h; ++v) {
-    const float* row = in.data() + static_cast<std::size_t>(v) * w * 5;
-    float* dst = tmp.data() + static_cast<std::size_t>(v) * w * 5;
-    double acc[5] = {0, 0, 0, 0, 0};
-    for (int u = 0; u < std::min(r1, w); ++u)
-      for (int c = 0; c < 5; ++c) acc[c] += row[u * 5 + c];
+    const float* row = in.data() + static_cast<std::size_t>(v) * w * 4;
+    float* dst = tmp.data() + static_cast<std::size_t>(v) * w * 4;
+    float acc[4] = {0, 0, 0, 0};
     for (int u = 0; u < w; ++u) {
-      const int add = u + r1, sub = u - r0 - 1;
-      if (add < w)
-        for (int c = 0; c < 5; ++c) acc[c] += row[add * 5 + c];
-      if (sub >= 0)
-        for (int c = 0; c < 5; ++c) acc[c] -= row[sub * 5 + c];
-      for (int c = 0; c < 5; ++c) dst[u * 5 + c] = static_cast<float>(acc[c]);
+      if ((u & 63) == 0) {  // re-anchor: exact sum of the window
+        acc[0] = acc[1] = acc[2] = acc[3] = 0;
+        for (int k = std::max(0, u - r0); k <= std::min(w - 1, u + r1); ++k)
+          for (int c = 0; c < 4; ++c) acc[c] += row[k * 4 + c];
+      } else {
+        const int add = u + r1, sub = u - r0 - 1;
+        if (add < w)
+          for (int c = 0; c < 4; ++c) acc[c] += row[add * 4 + c];
+        if (sub >= 0)
+          for (int c = 0; c < 4; ++c) acc[c] -= row[sub * 4 + c];
+      }
+      for (int c = 0; c < 4; ++c) dst[u * 4 + c] = acc[c];
     }
   }
-  out.w = w;
-  out.h = h;
-  out.data.assign(in.size(), 0.0f);
-  std::vector<double> acc(static_cast<std::size_t>(w) * 5, 0.0);
-  const std::size_t stride = static_cast<std::size_t>(w) * 5;
-  for (int v = 0; v < std::min(r1, h); ++v)
-    for (std::size_t i = 0; i < stride; ++i) acc[i] += tmp[v * stride + i];
+  // Columns: a whole row of accumulators at once (vectorises, streams memory).
+  const std::size_t stride = static_cast<std::size_t>(w) * 4;
+  std::vector<float> acc(stride, 0.0f);
   for (int v = 0; v < h; ++v) {
-    const int add = v + r1, sub = v - r0 - 1;
-    if (add < h)
-      for (std::size_t i = 0; i < stride; ++i) acc[i] += tmp[add * stride + i];
-    if (sub >= 0)
-      for (std::size_t i = 0; i < stride; ++i) acc[i] -= tmp[sub * stride + i];
-    float* dst = out.data.data() + v * stride;
-    for (std::size_t i = 0; i < stride; ++i) dst[i] = static_cast<float>(acc[i]);
+    float* dst = out.data() + v * stride;
+    if ((v & 63) == 0) {
+      std::fill(acc.begin(), acc.end(), 0.0f);
+      for (int k = std::max(0, v - r0); k <= std::min(h - 1, v + r1); ++k) {
+        const float* src = tmp.data() + k * stride;
+        for (std::size_t i = 0; i < stride; ++i) acc[i] += src[i];
+      }
+    } else {
+      const int add = v + r1, sub = v - r0 - 1;
+      if (add < h) {
+        const float* src = tmp.data() + add * stride;
+        for (std::size_t i = 0; i < stride; ++i) acc[i] += src[i];
+      }
+      if (sub >= 0) {
+        const float* src = tmp.data() + sub * stride;
+        for (std::size_t i = 0; i < stride; ++i) acc[i] -= src[i];
+      }
+    }
+    std::copy(acc.begin(), acc.end(), dst);
   }
 }
 
-Eigen::Vector3f box_mean(const float* b) { return Eigen::Vector3f(b[0], b[1], b[2]) / b[3]; }
-
-// Tangent from the box means before (a), at (c) and after (b) the pixel.
-bool gradient(const float* a, const float* c, const float* b, float min_count, Eigen::Vector3f& t) {
-  const bool has_a = a[3] >= min_count, has_b = b[3] >= min_count;
-  if (has_a && has_b) {
-    t = box_mean(b) - box_mean(a);
-    return true;
+// Pixels within `radius` (Chebyshev) of a flagged pixel: separable max filter via running counts.
+void dilate(const std::vector<std::uint8_t>& flags, int w, int h, int radius, std::vector<std::uint8_t>& out) {
+  std::vector<std::uint16_t> rows(flags.size());
+  for (int v = 0; v < h; ++v) {
+    const std::uint8_t* f = flags.data() + static_cast<std::size_t>(v) * w;
+    std::uint16_t* r = rows.data() + static_cast<std::size_t>(v) * w;
+    int count = 0;
+    for (int u = 0; u < std::min(radius, w); ++u) count += f[u];
+    for (int u = 0; u < w; ++u) {
+      if (u + radius < w) count += f[u + radius];
+      if (u - radius - 1 >= 0) count -= f[u - radius - 1];
+      r[u] = static_cast<std::uint16_t>(count);
+    }
   }
-  if (c[3] < min_count) return false;
-  if (has_b) {
-    t = box_mean(b) - box_mean(c);
-    return true;
+  out.assign(flags.size(), 0);
+  std::vector<int> count(w, 0);
+  for (int v = 0; v < std::min(radius, h); ++v)
+    for (int u = 0; u < w; ++u) count[u] += rows[static_cast<std::size_t>(v) * w + u] > 0;
+  for (int v = 0; v < h; ++v) {
+    if (v + radius < h)
+      for (int u = 0; u < w; ++u) count[u] += rows[static_cast<std::size_t>(v + radius) * w + u] > 0;
+    if (v - radius - 1 >= 0)
+      for (int u = 0; u < w; ++u) count[u] -= rows[static_cast<std::size_t>(v - radius - 1) * w + u] > 0;
+    std::uint8_t* o = out.data() + static_cast<std::size_t>(v) * w;
+    for (int u = 0; u < w; ++u) o[u] = count[u] > 0;
   }
-  if (has_a) {
-    t = box_mean(c) - box_mean(a);
-    return true;
-  }
-  return false;
 }
 
 }  // namespace
@@ -91,58 +103,77 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
   cloud.normals.assign(n, Eigen::Vector3f(nan, nan, nan));
   if (w < 3 || h < 3) return;
 
+  // Thread-local scratch: no allocation per frame in the steady state.
+  thread_local std::vector<float> channels, tmp, sums;
+  thread_local std::vector<std::uint8_t> edges, near_edge;
+  channels.assign(n * 4, 0.0f);
+  edges.assign(n, 0);
   const float jump = static_cast<float>(options.max_depth_change);
-  // Channels: point (x, y, z), valid flag, and a depth-discontinuity flag (a jump to the right
-  // or lower neighbour larger than max_depth_change * depth, or a valid/invalid border).
-  std::vector<float> channels(n * 5, 0.0f);
   for (int v = 0; v < h; ++v) {
     for (int u = 0; u < w; ++u) {
-      const std::size_t i = cloud.index(u, v);
+      const std::size_t i = static_cast<std::size_t>(v) * w + u;
       const Eigen::Vector3f& p = cloud.points[i];
-      float* c = channels.data() + i * 5;
       if (!OrganizedCloud::valid(p)) continue;
-      c[0] = p.x();
-      c[1] = p.y();
-      c[2] = p.z();
-      c[3] = 1.0f;
+      float* c = channels.data() + i * 4;
+      c[0] = p.x(), c[1] = p.y(), c[2] = p.z(), c[3] = 1.0f;
+      // A depth discontinuity: a jump to the right or lower neighbour beyond jump * depth.
       const float limit = jump * p.z();
       if (u + 1 < w) {
-        const Eigen::Vector3f& q = cloud.points[i + 1];
-        if (OrganizedCloud::valid(q) && std::abs(q.z() - p.z()) > limit) c[4] = 1.0f;
+        const float q = cloud.points[i + 1].z();
+        if (q == q && std::abs(q - p.z()) > limit) edges[i] = 1;
       }
       if (v + 1 < h) {
-        const Eigen::Vector3f& q = cloud.points[i + w];
-        if (OrganizedCloud::valid(q) && std::abs(q.z() - p.z()) > limit) c[4] = 1.0f;
+        const float q = cloud.points[i + w].z();
+        if (q == q && std::abs(q - p.z()) > limit) edges[i] = 1;
       }
     }
   }
 
   const int s = std::max(3, options.smoothing_px);
   const int r = std::max(1, s / 2);  // gradient step between the two box means
-  std::vector<float> tmp;
-  BoxSums box;
-  box_filter(channels, w, h, s, tmp, box);
-  // Edge counts over the whole span the two boxes cover (2s), so that no box straddles a
-  // depth discontinuity: one more box filter of the edge channel with a side-2s window.
-  BoxSums span;
-  box_filter(channels, w, h, 2 * s + 1, tmp, span);
+  box_sum4(channels, w, h, s, tmp, sums);
+  // No box may straddle a discontinuity: drop pixels with an edge within the span of the boxes.
+  dilate(edges, w, h, r + s / 2, near_edge);
 
-  const float min_count = 0.25f * s * s;  // a box mean needs a quarter of its pixels
+  // Box means in place; support below a quarter of the window = no mean (w channel 0).
+  const float min_count = 0.25f * s * s;
+  for (std::size_t i = 0; i < n; ++i) {
+    float* b = sums.data() + i * 4;
+    if (b[3] >= min_count) {
+      const float inv = 1.0f / b[3];
+      b[0] *= inv, b[1] *= inv, b[2] *= inv, b[3] = 1.0f;
+    } else {
+      b[3] = 0.0f;
+    }
+  }
+  auto mean = [&](int u, int v) -> const float* {
+    static const float kNone[4] = {0, 0, 0, 0};
+    if (u < 0 || v < 0 || u >= w || v >= h) return kNone;
+    return sums.data() + (static_cast<std::size_t>(v) * w + u) * 4;
+  };
+  // Tangent from the means before (a), at (c) and after (b) the pixel: central difference, or
+  // one-sided where one side lacks support, so normals reach up to holes and the border.
+  auto tangent = [](const float* a, const float* c, const float* b, Eigen::Vector3f& t) {
+    const float* lo = a[3] > 0 ? a : c;
+    const float* hi = b[3] > 0 ? b : c;
+    if (lo == hi || lo[3] == 0 || hi[3] == 0) return false;
+    t = Eigen::Vector3f(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    return true;
+  };
+
   for (int v = 0; v < h; ++v) {
     for (int u = 0; u < w; ++u) {
-      const std::size_t i = cloud.index(u, v);
+      const std::size_t i = static_cast<std::size_t>(v) * w + u;
       const Eigen::Vector3f& p = cloud.points[i];
-      if (!OrganizedCloud::valid(p)) continue;
-      if (span.at(u, v)[4] > 0.5f) continue;
-      // Central difference of the box means; one-sided (against the centre box) where one
-      // side lacks support, so that normals reach up to holes and the image border.
+      if (!OrganizedCloud::valid(p) || near_edge[i]) continue;
+      const float* c = mean(u, v);
       Eigen::Vector3f tu, tv;
-      if (!gradient(box.at(u - r, v), box.at(u, v), box.at(u + r, v), min_count, tu)) continue;
-      if (!gradient(box.at(u, v - r), box.at(u, v), box.at(u, v + r), min_count, tv)) continue;
+      if (!tangent(mean(u - r, v), c, mean(u + r, v), tu)) continue;
+      if (!tangent(mean(u, v - r), c, mean(u, v + r), tv)) continue;
       Eigen::Vector3f nrm = tv.cross(tu);
-      const float len = nrm.norm();
-      if (!(len > 0.0f)) continue;
-      nrm /= len;
+      const float len2 = nrm.squaredNorm();
+      if (!(len2 > 0.0f)) continue;
+      nrm *= 1.0f / std::sqrt(len2);
       if (nrm.dot(p) > 0.0f) nrm = -nrm;  // face the camera
       cloud.normals[i] = nrm;
     }

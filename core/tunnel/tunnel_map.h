@@ -34,6 +34,10 @@ struct Wall {
   std::vector<ZoneCluster> clusters;                   // zone positions on this wall
   std::vector<ZoneRect> zones;                         // forbidden edge bands + middle plate
   std::array<Eigen::Vector3d, 4> boundary;             // wall rectangle over the visible extent
+  // Gaussian statistics of the class's plane normals (added fields).
+  int inlier_planes = 0;       // planes of this class kept by the histogram test
+  int outlier_planes = 0;      // planes of this class rejected by the histogram test
+  double normal_sd_deg = 0.0;  // RMS angle of the inlier normals about their mean
 };
 
 struct TunnelMap {
@@ -50,6 +54,7 @@ struct TunnelMap {
   std::array<Wall, 4> walls;       // indexed by WallClass (Left..Bottom)
   std::vector<WallClass> plane_classes;  // per PlaneSegment (same order), after outliers
   std::vector<bool> plane_outlier;       // per PlaneSegment: rejected by the histogram test
+  std::vector<WallClass> plane_candidate_classes;  // per PlaneSegment: class before outliers
   StageTimings timings_ms;
 
   const Wall& wall(WallClass c) const { return walls[static_cast<int>(c)]; }

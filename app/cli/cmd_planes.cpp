@@ -1,0 +1,111 @@
+// `tunnelmap-cli planes INPUT`: plane extraction only (cloud, normals, PG&C), with timings as
+// medians over --repeat runs and an optional 16-bit label image.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "app/cli/commands.h"
+#include "app/cli/input_options.h"
+#include "core/io/frame_source.h"
+#include "core/report/results_json.h"
+#include "core/util/atomic_file.h"
+#include "core/util/error.h"
+
+namespace tunnelmap::cli {
+
+namespace {
+struct PlanesOptions {
+  InputOptions in;
+  std::string json_path;
+  std::string labels_path;
+  int repeat = 1;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// For sequences, "labels.png" becomes "labels_000003.png".
+std::string labels_name(const std::string& path, std::size_t index, std::size_t count) {
+  if (count <= 1) return path;
+  namespace fs = std::filesystem;
+  const fs::path p(path);
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "_%06zu", index);
+  return (p.parent_path() / (p.stem().string() + suffix + p.extension().string())).string();
+}
+
+void write_labels(const std::string& path, const PlaneSegments& planes) {
+  cv::Mat img(planes.height, planes.width, CV_16UC1);
+  for (int v = 0; v < planes.height; ++v)
+    for (int u = 0; u < planes.width; ++u)
+      img.at<std::uint16_t>(v, u) =
+          static_cast<std::uint16_t>(std::min(65535, planes.labels[static_cast<std::size_t>(v) * planes.width + u]));
+  write_path_atomically(path, [&](const std::string& tmp) {
+    if (!cv::imwrite(tmp, img)) throw InputError(path, "cannot write the label image");
+  });
+}
+
+int run_planes(const PlanesOptions& o) {
+  if (o.repeat < 1 || o.repeat > 10000) throw ParameterError("--repeat must be between 1 and 10000");
+  if (!o.labels_path.empty() && std::filesystem::path(o.labels_path).extension() != ".png")
+    throw ParameterError("--labels must name a .png file");
+  const Parameters params = o.in.parameters();
+  auto source = open_input(o.in.input, o.in.read_options());
+  nlohmann::json frames = nlohmann::json::array();
+  Progress progress(source->size());
+  OrganizedCloud cloud;
+  for (std::size_t i = 0; i < source->size(); ++i) {
+    const DepthFrame frame = source->load(i);
+    std::vector<double> t_cloud, t_normals, t_planes, t_total;
+    PlaneSegments planes;
+    for (int k = 0; k < o.repeat; ++k) {
+      cloud.timings_ms.clear();
+      const auto start = std::chrono::steady_clock::now();
+      {
+        StageTimer t(cloud.timings_ms, "cloud");
+        build_cloud(frame, cloud_options(params), cloud);
+      }
+      estimate_normals(normal_options(params), cloud);
+      planes = extract_planes(cloud, grow_options(params));
+      t_total.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      t_cloud.push_back(cloud.timings_ms["cloud"]);
+      t_normals.push_back(cloud.timings_ms["normals"]);
+      t_planes.push_back(planes.timings_ms["planes"]);
+    }
+    const StageTimings timings = {{"cloud", median(t_cloud)},
+                                  {"normals", median(t_normals)},
+                                  {"planes", median(t_planes)},
+                                  {"total", median(t_total)}};
+    frames.push_back(planes_frame_json(i, frame.source, planes, timings));
+    std::printf("[%zu] %s: %zu planes, normals %.2f ms, planes %.2f ms, total %.2f ms%s\n", i,
+                source->describe(i).c_str(), planes.planes.size(), timings.at("normals"),
+                timings.at("planes"), timings.at("total"),
+                o.repeat > 1 ? (" (median of " + std::to_string(o.repeat) + ")").c_str() : "");
+    if (!o.labels_path.empty()) write_labels(labels_name(o.labels_path, i, source->size()), planes);
+    progress.step(i + 1);
+  }
+  if (!o.json_path.empty()) {
+    nlohmann::json doc = {{"tool", "tunnelmap"}, {"version", TUNNELMAP_VERSION}, {"method", "pgc"},
+                          {"input", o.in.input}, {"params", params.to_json()}, {"repeat", o.repeat},
+                          {"frames", frames}};
+    write_file_atomically(o.json_path, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
+  }
+  return 0;
+}
+}  // namespace
+
+void add_planes_command(CLI::App& app, CliContext& ctx) {
+  static PlanesOptions o;
+  auto* cmd = app.add_subcommand("planes", "Extract planes only (PG&C) and time the stages");
+  add_input_options(cmd, o.in);
+  cmd->add_option("--json", o.json_path, "Write the planes and timings as JSON");
+  cmd->add_option("--labels", o.labels_path, "Write the plane label image (16-bit PNG; _NNNNNN per frame for sequences)");
+  cmd->add_option("--repeat", o.repeat, "Run N times and report median timings");
+  cmd->callback([&ctx] { ctx.exit_code = run_planes(o); });
+}
+
+}  // namespace tunnelmap::cli

@@ -1,0 +1,100 @@
+#include "app/cli/input_options.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/util/error.h"
+
+namespace tunnelmap::cli {
+
+namespace {
+std::vector<double> parse_numbers(const std::string& text, std::size_t count, const std::string& flag) {
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(item, &used);
+    } catch (...) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || !std::isfinite(v))
+      throw ParameterError(flag + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+    out.push_back(v);
+  }
+  if (out.size() != count)
+    throw ParameterError(flag + " expects " + std::to_string(count) + " comma-separated numbers, got '" + text + "'");
+  return out;
+}
+}  // namespace
+
+void add_input_options(CLI::App* cmd, InputOptions& opt) {
+  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, or dataset folder")->required();
+  cmd->add_option("--params", opt.params_file, "Parameter preset JSON (see resources/presets)");
+  cmd->add_option("--set", opt.sets, "Override one parameter: KEY=VALUE (repeatable; see `params`)")
+      ->take_all();
+  cmd->add_option("--intrinsics", opt.intrinsics, "Camera intrinsics FX,FY,CX,CY in pixels");
+  cmd->add_option("--depth-scale", opt.depth_scale, "Depth PNG units per metre (default 1000: millimetres)");
+  cmd->add_option("--up", opt.up, "Camera-frame vector towards the roof X,Y,Z (default: from the pose, else image-up)");
+}
+
+Parameters InputOptions::parameters() const {
+  Parameters p;
+  if (!params_file.empty()) p.load_json_file(params_file);
+  for (const std::string& s : sets) p.set_from_string(s);
+  return p;
+}
+
+ReadOptions InputOptions::read_options() const {
+  ReadOptions r;
+  if (depth_scale != 0) {
+    if (!(depth_scale > 0) || !std::isfinite(depth_scale) || depth_scale > 1e7)
+      throw ParameterError("--depth-scale must be a positive number of units per metre");
+    r.depth_units_per_m = depth_scale;
+  }
+  if (!intrinsics.empty()) {
+    const auto v = parse_numbers(intrinsics, 4, "--intrinsics");
+    if (v[0] <= 0 || v[1] <= 0 || v[0] > 1e5 || v[1] > 1e5)
+      throw ParameterError("--intrinsics: focal lengths must be positive pixels");
+    Intrinsics K;
+    K.fx = v[0], K.fy = v[1], K.cx = v[2], K.cy = v[3];
+    r.intrinsics = K;
+  }
+  return r;
+}
+
+std::optional<Eigen::Vector3d> InputOptions::camera_up() const {
+  if (up.empty()) return std::nullopt;
+  const auto v = parse_numbers(up, 3, "--up");
+  const Eigen::Vector3d u(v[0], v[1], v[2]);
+  if (u.norm() < 1e-9) throw ParameterError("--up must not be the zero vector");
+  return u.normalized();
+}
+
+Pipeline InputOptions::pipeline() const {
+  Pipeline p(parameters());
+  p.set_camera_up(camera_up());
+  return p;
+}
+
+Progress::Progress(std::size_t total) : total_(total), enabled_(total > 1 && isatty(STDERR_FILENO)) {}
+
+void Progress::step(std::size_t done) {
+  if (!enabled_) return;
+  const int width = 30;
+  const int filled = static_cast<int>(width * done / std::max<std::size_t>(1, total_));
+  std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu", filled, "##############################", width - filled, "",
+               done, total_);
+  std::fflush(stderr);
+}
+
+Progress::~Progress() {
+  if (enabled_) std::fprintf(stderr, "\r%*s\r", 50, "");
+}
+
+}  // namespace tunnelmap::cli

@@ -1,0 +1,44 @@
+#pragma once
+// Options shared by the commands that read frames and run the pipeline.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/io/read_options.h"
+#include "core/params/parameters.h"
+#include "core/pipeline/pipeline.h"
+
+namespace tunnelmap::cli {
+
+struct InputOptions {
+  std::string input;
+  std::string params_file;
+  std::vector<std::string> sets;
+  std::string intrinsics;   // "FX,FY,CX,CY"
+  double depth_scale = 0;   // 0 = reader default (1000 for PNG)
+  std::string up;           // "X,Y,Z" camera frame
+
+  // Parameters: defaults, then --params FILE, then each --set (ParameterError / InputError).
+  Parameters parameters() const;
+  ReadOptions read_options() const;                 // ParameterError for malformed values
+  std::optional<Eigen::Vector3d> camera_up() const;  // ParameterError for malformed values
+  Pipeline pipeline() const;                         // parameters + up, world up from a dataset
+};
+
+// Registers INPUT and --params/--set/--intrinsics/--depth-scale/--up on `cmd`.
+void add_input_options(CLI::App* cmd, InputOptions& opt);
+
+// Progress bar on stderr when it is a terminal (sequences only).
+class Progress {
+ public:
+  explicit Progress(std::size_t total);
+  void step(std::size_t done);
+  ~Progress();
+
+ private:
+  std::size_t total_;
+  bool enabled_;
+};
+
+}  // namespace tunnelmap::cli

@@ -1,0 +1,19 @@
+#pragma once
+// The VGA frames every benchmark runs on: simulated lab and field frames (in memory, fixed
+// seeds) and the real third-party frames in resources/real-frames.
+#include <string>
+#include <vector>
+
+#include "core/frame/depth_frame.h"
+
+namespace tunnelmap::bench {
+
+struct NamedFrame {
+  std::string name;
+  DepthFrame frame;
+  bool is_tunnel;  // a rectangular tunnel the detector should find
+};
+
+const std::vector<NamedFrame>& bench_frames();
+
+}  // namespace tunnelmap::bench

@@ -1,0 +1,167 @@
+#include "core/io/depth_png.h"
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/util/error.h"
+
+namespace tunnelmap {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::size_t kMaxImageFileBytes = 512u << 20;
+const std::uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+
+std::uint32_t big_endian_u32(const std::uint8_t* p) {
+  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+         std::uint32_t(p[3]);
+}
+
+std::string describe_png_type(const PngHeader& h) {
+  static const char* names[] = {"grey", "?", "RGB", "palette", "grey+alpha", "?", "RGBA"};
+  const char* name = (h.colour_type >= 0 && h.colour_type <= 6) ? names[h.colour_type] : "?";
+  return std::to_string(h.bit_depth) + "-bit " + name;
+}
+
+// Decodes an in-memory image, keeping its bit depth and channel count.
+cv::Mat decode(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  cv::Mat img;
+  try {
+    img = cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1,
+                               const_cast<std::uint8_t*>(bytes.data())),
+                       cv::IMREAD_ANYDEPTH | cv::IMREAD_ANYCOLOR);
+  } catch (const cv::Exception& e) {
+    throw InputError(path, "cannot decode the image (corrupt or truncated)");
+  }
+  if (img.empty()) throw InputError(path, "cannot decode the image (corrupt or truncated)");
+  return img;
+}
+
+// A truncated PNG can decode "successfully" with missing rows: walk the chunk list and
+// require every chunk to be complete up to IEND.
+void require_png_end(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  std::size_t pos = 8;
+  while (pos + 12 <= bytes.size()) {
+    const std::size_t length = big_endian_u32(bytes.data() + pos);
+    const bool is_end = std::memcmp(bytes.data() + pos + 4, "IEND", 4) == 0;
+    if (length > bytes.size() - pos - 12) break;  // chunk runs past the end of the file
+    if (is_end) return;
+    pos += 12 + length;
+  }
+  throw InputError(path, "truncated or corrupt PNG (ends before its IEND chunk)");
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> read_file_bytes(const std::string& path, std::size_t max_bytes) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path, "file not found");
+  if (fs::is_directory(path, ec)) throw InputError(path, "is a folder, expected a file");
+  const auto size = fs::file_size(path, ec);
+  if (ec) throw InputError(path, "cannot read: " + ec.message());
+  if (size > max_bytes)
+    throw InputError(path, "file is too large (" + std::to_string(size) + " bytes)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open for reading");
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  if (size > 0) in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
+  if (!in) throw InputError(path, "read error");
+  return bytes;
+}
+
+PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+  // Signature (8) + IHDR length (4) + "IHDR" (4) + width (4) + height (4) + depth + colour type.
+  if (bytes.size() < 26 || std::memcmp(bytes.data(), kPngSignature, 8) != 0)
+    throw InputError(path, "is not a PNG file");
+  if (std::memcmp(bytes.data() + 12, "IHDR", 4) != 0)
+    throw InputError(path, "corrupt PNG: first chunk is not IHDR");
+  const std::uint32_t w = big_endian_u32(bytes.data() + 16);
+  const std::uint32_t h = big_endian_u32(bytes.data() + 20);
+  if (w == 0 || h == 0 || w > std::uint32_t(kMaxImageSide) || h > std::uint32_t(kMaxImageSide))
+    throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
+                               " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
+  PngHeader header;
+  header.width = static_cast<int>(w);
+  header.height = static_cast<int>(h);
+  header.bit_depth = bytes[24];
+  header.colour_type = bytes[25];
+  return header;
+}
+
+DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt) {
+  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  const PngHeader header = parse_png_header(bytes, path);
+  if (header.bit_depth != 16 || header.colour_type != 0)
+    throw InputError(path, std::string(header.bit_depth == 8 ? "is an " : "is a ") +
+                               describe_png_type(header) +
+                               " image; depth PNGs must be 16-bit single channel");
+  require_png_end(bytes, path);
+  const cv::Mat img = decode(bytes, path);
+  if (img.type() != CV_16UC1)
+    throw InputError(path, "depth PNGs must be 16-bit single channel");
+  if (img.cols != header.width || img.rows != header.height)
+    throw InputError(path, "corrupt PNG: decoded size differs from its header");
+
+  DepthFrame f;
+  f.width = img.cols;
+  f.height = img.rows;
+  f.depth.resize(static_cast<std::size_t>(f.width) * f.height);
+  for (int v = 0; v < f.height; ++v) {
+    const auto* row = img.ptr<std::uint16_t>(v);
+    float* out = f.depth.data() + static_cast<std::size_t>(v) * f.width;
+    for (int u = 0; u < f.width; ++u) out[u] = static_cast<float>(row[u]);
+  }
+  f.depth_units_per_m = opt.depth_units_per_m;
+  f.intrinsics = intrinsics_for_image(opt, f.width, f.height);
+  f.source = path;
+  return f;
+}
+
+std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height) {
+  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  const bool is_png = bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0;
+  if (is_png) {
+    parse_png_header(bytes, path);
+    require_png_end(bytes, path);
+  }
+  const cv::Mat img = decode(bytes, path);
+  if (img.type() != CV_8UC3)
+    throw InputError(path, "RGB images must be 8-bit 3-channel colour");
+  if (img.cols > kMaxImageSide || img.rows > kMaxImageSide)
+    throw InputError(path, "absurd image size");
+  cv::Mat rgb;
+  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);  // OpenCV decodes to BGR
+  width = rgb.cols;
+  height = rgb.rows;
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(width) * height * 3);
+  for (int v = 0; v < height; ++v)
+    std::memcpy(out.data() + static_cast<std::size_t>(v) * width * 3, rgb.ptr(v),
+                static_cast<std::size_t>(width) * 3);
+  return out;
+}
+
+std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height) {
+  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  const PngHeader header = parse_png_header(bytes, path);
+  require_png_end(bytes, path);
+  const cv::Mat img = decode(bytes, path);
+  if (img.channels() != 1)
+    throw InputError(path, "label PNGs must be single channel (" + describe_png_type(header) + ")");
+  cv::Mat img16;
+  img.convertTo(img16, CV_16U);
+  width = img16.cols;
+  height = img16.rows;
+  std::vector<std::uint16_t> out(static_cast<std::size_t>(width) * height);
+  for (int v = 0; v < height; ++v)
+    std::memcpy(out.data() + static_cast<std::size_t>(v) * width, img16.ptr(v),
+                static_cast<std::size_t>(width) * 2);
+  return out;
+}
+
+}  // namespace tunnelmap

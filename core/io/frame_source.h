@@ -1,0 +1,28 @@
+#pragma once
+// One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, or a
+// dataset folder (or its dataset.json).
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "core/frame/depth_frame.h"
+#include "core/io/dataset.h"
+#include "core/io/read_options.h"
+
+namespace tunnelmap {
+
+class FrameSource {
+ public:
+  virtual ~FrameSource();
+  virtual std::size_t size() const = 0;
+  virtual DepthFrame load(std::size_t i) const = 0;           // InputError on bad data
+  virtual std::string describe(std::size_t i) const = 0;      // e.g. "frame 3/120 (depth/000003.png)"
+  virtual const Dataset* dataset() const { return nullptr; }  // non-null for dataset inputs
+};
+
+// Chooses the reader by extension (.png, .pcd, .json, folder), else by the file's first bytes.
+// A dataset is read and validated here; its own depth_scale and intrinsics win over `opt`.
+// InputError for a missing input or an unknown type.
+std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOptions& opt);
+
+}  // namespace tunnelmap

@@ -1,0 +1,163 @@
+#include "core/report/results_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tunnelmap {
+
+namespace {
+nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+double round_to(double v, double unit) { return std::round(v / unit) * unit; }
+
+nlohmann::json timings_json(const StageTimings& t) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [k, v] : t) j[k] = round_to(v, 1e-3);
+  return j;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+void mean_std(const std::vector<double>& v, double& mean, double& std) {
+  mean = std = 0.0;
+  if (v.empty()) return;
+  for (double x : v) mean += x;
+  mean /= v.size();
+  for (double x : v) std += (x - mean) * (x - mean);
+  std = std::sqrt(std / v.size());
+}
+}  // namespace
+
+nlohmann::json detection_frame_json(std::size_t index, const std::string& source,
+                                    const FrameResult& r) {
+  const TunnelMap& m = r.map;
+  nlohmann::json j;
+  j["index"] = index;
+  j["source"] = source;
+  j["detected"] = m.detected;
+  j["status"] = m.status;
+  if (!m.reason.empty()) j["reason"] = m.reason;
+  j["width_m"] = m.detected ? nlohmann::json(round_to(m.width_m, 1e-5)) : nlohmann::json(nullptr);
+  j["height_m"] = m.detected ? nlohmann::json(round_to(m.height_m, 1e-5)) : nlohmann::json(nullptr);
+  j["planes"] = r.planes.planes.size();
+  nlohmann::json walls = nlohmann::json::object();
+  for (int c = 0; c < 4; ++c) {
+    const Wall& w = m.walls[c];
+    if (!w.found) continue;
+    nlohmann::json wj;
+    wj["normal"] = vec(w.normal);
+    wj["offset_m"] = round_to(w.offset_m, 1e-6);
+    wj["zones"] = w.clusters.size();
+    walls[wall_class_name(static_cast<WallClass>(c))] = wj;
+  }
+  j["walls"] = walls;
+  j["frame"] = "camera";
+  if (m.detected) {
+    j["axis"] = {{"point", vec(m.axis_point)}, {"direction", vec(m.axis_dir)},
+                 {"extent_m", {round_to(m.extent_min_m, 1e-4), round_to(m.extent_max_m, 1e-4)}}};
+  }
+  j["timings_ms"] = timings_json(r.timings_ms);
+  return j;
+}
+
+nlohmann::json planes_frame_json(std::size_t index, const std::string& source,
+                                 const PlaneSegments& planes, const StageTimings& timings_ms) {
+  nlohmann::json j;
+  j["index"] = index;
+  j["source"] = source;
+  nlohmann::json list = nlohmann::json::array();
+  for (const PlaneSegment& p : planes.planes) {
+    list.push_back({{"id", p.id},
+                    {"normal", vec(p.normal)},
+                    {"centroid", vec(p.centroid)},
+                    {"offset_m", round_to(p.offset_m, 1e-6)},
+                    {"points", p.points},
+                    {"area_m2", round_to(p.area_m2, 1e-6)},
+                    {"rms_m", round_to(p.rms_m, 1e-6)},
+                    {"contour_vertices", p.contour.size()}});
+  }
+  j["planes"] = list;
+  j["timings_ms"] = timings_json(timings_ms);
+  return j;
+}
+
+void DetectionSummary::add(const FrameResult& r) {
+  ++frames;
+  totals_.push_back(r.timings_ms.count("total") ? r.timings_ms.at("total") : 0.0);
+  if (!r.map.detected) return;
+  ++detected;
+  widths_.push_back(r.map.width_m);
+  heights_.push_back(r.map.height_m);
+}
+
+void DetectionSummary::finish() {
+  mean_std(widths_, width_mean_m, width_std_m);
+  mean_std(heights_, height_mean_m, height_std_m);
+  total_ms_median = median(totals_);
+  width_abs_error_mean_m = height_abs_error_mean_m = 0;
+  if (gt_width_m && !widths_.empty()) {
+    for (double w : widths_) width_abs_error_mean_m += std::abs(w - *gt_width_m);
+    width_abs_error_mean_m /= widths_.size();
+  }
+  if (gt_height_m && !heights_.empty()) {
+    for (double h : heights_) height_abs_error_mean_m += std::abs(h - *gt_height_m);
+    height_abs_error_mean_m /= heights_.size();
+  }
+}
+
+nlohmann::json DetectionSummary::to_json() const {
+  nlohmann::json j;
+  j["frames"] = frames;
+  j["detected"] = detected;
+  j["width_mean_m"] = round_to(width_mean_m, 1e-5);
+  j["width_std_m"] = round_to(width_std_m, 1e-5);
+  j["height_mean_m"] = round_to(height_mean_m, 1e-5);
+  j["height_std_m"] = round_to(height_std_m, 1e-5);
+  j["total_ms_median"] = round_to(total_ms_median, 1e-3);
+  if (gt_width_m && gt_height_m) {
+    j["ground_truth"] = {{"width_m", *gt_width_m}, {"height_m", *gt_height_m}};
+    j["width_abs_error_mean_m"] = round_to(width_abs_error_mean_m, 1e-5);
+    j["height_abs_error_mean_m"] = round_to(height_abs_error_mean_m, 1e-5);
+  }
+  return j;
+}
+
+nlohmann::json detection_document(const nlohmann::json& params, const nlohmann::json& frames,
+                                  const DetectionSummary& summary, const std::string& input) {
+  nlohmann::json doc;
+  doc["tool"] = "tunnelmap";
+  doc["version"] = TUNNELMAP_VERSION;
+  doc["method"] = "pgc";
+  doc["input"] = input;
+  doc["params"] = params;
+  doc["frames"] = frames;
+  doc["summary"] = summary.to_json();
+  return doc;
+}
+
+std::string detection_csv(const nlohmann::json& frames) {
+  std::ostringstream out;
+  out << "index,source,detected,status,width_m,height_m,planes,total_ms\n";
+  for (const auto& f : frames) {
+    std::string source = f.value("source", "");
+    std::replace(source.begin(), source.end(), ',', ';');
+    out << f.value("index", 0) << ',' << source << ',' << (f.value("detected", false) ? 1 : 0) << ','
+        << f.value("status", "") << ',';
+    if (f["width_m"].is_number()) out << f["width_m"].get<double>();
+    out << ',';
+    if (f["height_m"].is_number()) out << f["height_m"].get<double>();
+    out << ',' << f.value("planes", 0) << ',';
+    if (f.contains("timings_ms") && f["timings_ms"].contains("total"))
+      out << f["timings_ms"]["total"].get<double>();
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace tunnelmap

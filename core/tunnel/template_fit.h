@@ -1,0 +1,27 @@
+#pragma once
+// Step 3 of tunnel detection: the rectangular template. Opposite walls must be antiparallel,
+// the two pairs perpendicular; the result is one orthonormal tunnel frame.
+#include <Eigen/Core>
+#include <string>
+
+namespace tunnelmap {
+
+struct TemplateFrame {
+  bool ok = false;
+  std::string status;  // "", "no_parallel_pair" or "not_rectangular"
+  std::string reason;
+  Eigen::Vector3d right = Eigen::Vector3d::UnitX();  // = left wall's normal = -right wall's
+  Eigen::Vector3d up = -Eigen::Vector3d::UnitY();    // = floor's normal = -roof's
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();   // along the tunnel, away from the camera
+  double left_right_angle_deg = 0.0;  // deviation from antiparallel
+  double top_bottom_angle_deg = 0.0;
+  double pair_angle_deg = 0.0;        // deviation of the two pair directions from 90 degrees
+};
+
+// Inputs: the four class mean normals (unit, inward). `camera_forward` orients the axis.
+TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector3d& n_right,
+                                       const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
+                                       const Eigen::Vector3d& camera_forward,
+                                       double max_pair_angle_deg);
+
+}  // namespace tunnelmap

@@ -1,0 +1,215 @@
+// detect_tunnel: runs the steps of paper section 2.2 in order (see docs/tunnel-detection.md).
+// Each step lives in its own file; this one wires them and reports the first failure.
+#include "core/tunnel/tunnel_detector.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "core/tunnel/normal_outliers.h"
+#include "core/tunnel/template_fit.h"
+#include "core/tunnel/wall_classification.h"
+#include "core/tunnel/wall_geometry.h"
+#include "core/tunnel/zone_clustering.h"
+#include "core/util/error.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr WallClass kWalls[] = {WallClass::Left, WallClass::Right, WallClass::Top,
+                                WallClass::Bottom};
+
+std::string fmt(const char* f, double a = 0, double b = 0, double c = 0, double d = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, f, a, b, c, d);
+  return buf;
+}
+
+void fail(TunnelMap& map, const std::string& status, const std::string& reason) {
+  map.detected = false;
+  map.status = status;
+  map.reason = reason;
+}
+
+void check_options(const TunnelOptions& o) {
+  if (!(o.outlier_bin_deg > 0) || !(o.outlier_max_deg > 0) || !(o.class_angle_deg > 0) ||
+      o.class_angle_deg > 45.0 || !(o.zone_cluster_m > 0) || !(o.max_pair_angle_deg > 0) ||
+      !(o.forbidden_band_m >= 0))
+    throw ParameterError("tunnel options out of range (angles and gaps must be > 0, class cone <= 45 deg)");
+}
+
+// Steps 1-2: classes, outliers and per-class mean normals. Returns false if a wall is missing.
+bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& rough,
+                         const TunnelOptions& opt, TunnelMap& map,
+                         std::array<Eigen::Vector3d, 4>& means) {
+  const size_t n = planes.planes.size();
+  map.plane_candidate_classes = classify_planes(rough, planes, opt.class_angle_deg);
+  map.plane_classes = map.plane_candidate_classes;
+  map.plane_outlier.assign(n, false);
+  std::string missing;
+  for (WallClass c : kWalls) {
+    std::vector<size_t> members;
+    std::vector<WeightedNormal> normals;
+    for (size_t i = 0; i < n; ++i) {
+      if (map.plane_candidate_classes[i] != c) continue;
+      members.push_back(i);
+      normals.push_back({planes.planes[i].normal.normalized(),
+                         static_cast<double>(std::max(1, planes.planes[i].points))});
+    }
+    const NormalClassStats st = reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg);
+    Wall& w = map.wall(c);
+    w.cls = c;
+    for (size_t k = 0; k < members.size(); ++k) {
+      if (st.inlier[k]) {
+        ++w.inlier_planes;
+      } else {
+        ++w.outlier_planes;
+        map.plane_outlier[members[k]] = true;
+        map.plane_classes[members[k]] = WallClass::Unassigned;
+      }
+    }
+    w.normal_sd_deg = st.sd_deg;
+    means[static_cast<int>(c)] = st.mean;
+    if (!st.valid) {
+      if (!missing.empty()) missing += "; ";
+      missing += std::string(wall_class_name(c)) + " wall: " + std::to_string(members.size()) +
+                 " planes" + (members.empty() ? "" : ", all outliers");
+    }
+  }
+  if (!missing.empty()) {
+    fail(map, "missing_wall", missing);
+    return false;
+  }
+  return true;
+}
+
+void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const TunnelOptions& opt,
+         const TunnelContext* context, TunnelMap& map) {
+  const size_t n = planes.planes.size();
+  map.plane_classes.assign(n, WallClass::Unassigned);
+  map.plane_candidate_classes.assign(n, WallClass::Unassigned);
+  map.plane_outlier.assign(n, false);
+  for (WallClass c : kWalls) map.wall(c).cls = c;
+  const RoughTunnelFrame rough = make_rough_frame(up_camera);
+  map.up = rough.up;
+  map.axis_dir = rough.forward;
+
+  if (n < 4) {
+    fail(map, "too_few_planes", fmt("%.0f planes detected, at least 4 needed", double(n)));
+    return;
+  }
+
+  // Steps 1-2.
+  std::array<Eigen::Vector3d, 4> means;
+  if (!classify_and_reject(planes, rough, opt, map, means)) return;
+
+  // Step 3: rectangular template.
+  const TemplateFrame tf = fit_rectangular_template(
+      means[int(WallClass::Left)], means[int(WallClass::Right)], means[int(WallClass::Top)],
+      means[int(WallClass::Bottom)], rough.forward, opt.max_pair_angle_deg);
+  if (!tf.ok) {
+    fail(map, tf.status, tf.reason);
+    return;
+  }
+  const Eigen::Vector3d template_normal[4] = {tf.right, -tf.right, -tf.up, tf.up};
+
+  // Step 4: zone positions with the common wall normal, clustered; outermost supported zone.
+  double offsets[4] = {0, 0, 0, 0};
+  std::string weak;
+  double axial_min = std::numeric_limits<double>::infinity();
+  double axial_max = -axial_min;
+  for (WallClass c : kWalls) {
+    const int ci = static_cast<int>(c);
+    Wall& w = map.wall(c);
+    w.found = true;
+    w.normal = template_normal[ci];
+    std::vector<ZonePosition> positions;
+    for (size_t i = 0; i < n; ++i) {
+      if (map.plane_classes[i] != c) continue;
+      const PlaneSegment& p = planes.planes[i];
+      positions.push_back({-w.normal.dot(p.centroid), p.points});
+      if (p.contour.empty()) {
+        axial_min = std::min(axial_min, tf.axis.dot(p.centroid));
+        axial_max = std::max(axial_max, tf.axis.dot(p.centroid));
+      }
+      for (const auto& q : p.contour) {
+        axial_min = std::min(axial_min, tf.axis.dot(q));
+        axial_max = std::max(axial_max, tf.axis.dot(q));
+      }
+    }
+    w.clusters = cluster_zone_positions(std::move(positions), opt.zone_cluster_m);
+    const int best = outermost_supported_cluster(w.clusters, opt.min_cluster_points);
+    if (best < 0) {
+      w.found = false;
+      if (!weak.empty()) weak += "; ";
+      weak += std::string(wall_class_name(c)) + " wall: no zone cluster with >= " +
+              std::to_string(opt.min_cluster_points) + " points";
+      continue;
+    }
+    offsets[ci] = w.clusters[best].offset_m;
+    w.offset_m = offsets[ci];
+  }
+  if (!weak.empty()) {
+    fail(map, "missing_wall", weak);
+    return;
+  }
+  const WallOffsets off{offsets[int(WallClass::Left)], offsets[int(WallClass::Right)],
+                        offsets[int(WallClass::Top)], offsets[int(WallClass::Bottom)]};
+  map.width_m = off.left + off.right;
+  map.height_m = off.top + off.bottom;
+
+  // Step 6 (done before the checks so a rejected map can still be inspected).
+  build_wall_geometry(tf, off, axial_min, axial_max, opt.forbidden_band_m, map);
+
+  // Step 5: template prior and context of earlier scans.
+  if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m) {
+    fail(map, "out_of_template", fmt("width %.3f m outside [%.2f, %.2f]", map.width_m,
+                                     opt.width_min_m, opt.width_max_m));
+    return;
+  }
+  if (map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
+    fail(map, "out_of_template", fmt("height %.3f m outside [%.2f, %.2f]", map.height_m,
+                                     opt.height_min_m, opt.height_max_m));
+    return;
+  }
+  if (context && !context->empty()) {
+    const double dw = map.width_m - context->width_m();
+    const double dh = map.height_m - context->height_m();
+    if (std::abs(dw) > opt.context_tolerance_m) {
+      fail(map, "inconsistent_with_context",
+           fmt("width %.3f m differs from the context's %.3f m by more than %.0f mm", map.width_m,
+               context->width_m(), opt.context_tolerance_m * 1000.0));
+      return;
+    }
+    if (std::abs(dh) > opt.context_tolerance_m) {
+      fail(map, "inconsistent_with_context",
+           fmt("height %.3f m differs from the context's %.3f m by more than %.0f mm",
+               map.height_m, context->height_m(), opt.context_tolerance_m * 1000.0));
+      return;
+    }
+  }
+  map.detected = true;
+  map.status = "ok";
+  map.reason = fmt("width %.3f m, height %.3f m", map.width_m, map.height_m);
+}
+
+}  // namespace
+
+TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                        const TunnelOptions& options, const TunnelContext* context) {
+  const double up_norm = up_camera.norm();
+  if (!std::isfinite(up_norm) || up_norm < 1e-9)
+    throw ParameterError("tunnel detection: the up vector must be finite and non-zero");
+  check_options(options);
+  TunnelMap map;
+  {
+    StageTimer timer(map.timings_ms, "tunnel");
+    run(planes, up_camera, options, context, map);
+  }
+  return map;
+}
+
+}  // namespace tunnelmap

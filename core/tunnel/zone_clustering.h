@@ -1,0 +1,22 @@
+#pragma once
+// Step 4 of tunnel detection: zone positions along a fixed wall normal, clustered in 1D.
+#include <vector>
+
+#include "core/tunnel/tunnel_map.h"
+
+namespace tunnelmap {
+
+struct ZonePosition {
+  double offset_m = 0.0;  // plane offset with the wall's common normal: -(n . centroid)
+  int points = 0;
+};
+
+// Single-linkage clustering of the offsets: sorted, a gap larger than `gap_m` starts a new
+// cluster. Each cluster's offset is the point-weighted mean (planes with 0 points weigh 1).
+// Returned outermost first (largest offset = furthest from the tunnel inside).
+std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m);
+
+// Index into `clusters` of the outermost cluster with at least `min_points` points, or -1.
+int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int min_points);
+
+}  // namespace tunnelmap

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Fresh machine -> every test: installs dependencies, builds (Release), runs the whole CTest
+# suite (unit, integration, CLI, rendering and GUI tests; GUI tests get a virtual X display).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+bash scripts/install-deps.sh
+bash scripts/build.sh
+cd build
+# GUI tests need an X server; everything else runs headless.
+if command -v xvfb-run >/dev/null 2>&1 && [ -z "${DISPLAY:-}" ]; then
+  xvfb-run -a -s "-screen 0 1920x1080x24" ctest --output-on-failure -j 2
+else
+  ctest --output-on-failure -j 2
+fi
+echo "test.sh: finished in $(( $(date +%s) - start )) s"

@@ -1,0 +1,442 @@
+// Tunnel detection (paper 2.2) on hand-built plane sets from a known rectangular tunnel.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+
+#include "core/tunnel/tunnel_detector.h"
+#include "core/tunnel/zone_clustering.h"
+#include "core/util/error.h"
+
+namespace tunnelmap {
+namespace {
+
+constexpr double kW = 0.82, kH = 1.30, kBand = 0.15;
+constexpr double kDeg = M_PI / 180.0;
+
+// A synthetic scan. Tunnel frame: x across (to the right looking down the tunnel), y up,
+// z along the tunnel. The camera sits inside at `cam` with axes R (columns, tunnel frame).
+struct SceneSpec {
+  double yaw_deg = 8, pitch_deg = -12, roll_deg = 20;
+  Eigen::Vector3d cam = Eigen::Vector3d(0.12, -0.25, 0.0);
+  double proud_m = 0.008;        // middle plates protrude this far into the tunnel
+  double normal_noise_deg = 0.15;
+  double offset_noise_m = 0.0003;
+  bool outliers = true;          // planes with wrong normals, a manhole plate, a small stray zone
+  bool with[4] = {true, true, true, true};  // per WallClass
+  double tilt_top_bottom_deg = 0;  // rotate roof+floor normals about the axis (rhombus)
+  double tilt_left_deg = 0;        // rotate only the left wall's normals about the axis
+};
+
+struct Scene {
+  PlaneSegments planes;
+  std::vector<WallClass> truth;  // class the plane belongs to (Unassigned for manhole)
+  std::vector<bool> is_outlier;  // planes built with a wrong normal
+  Eigen::Matrix3d R;             // camera axes in the tunnel frame
+  Eigen::Vector3d cam;
+  Eigen::Vector3d up_cam;
+  Eigen::Vector3d to_tunnel(const Eigen::Vector3d& p) const { return R * p + cam; }
+};
+
+Eigen::Matrix3d camera_axes(double yaw, double pitch, double roll) {
+  Eigen::Matrix3d base;  // camera X = right, Y = down, Z = along the tunnel
+  base.col(0) = Eigen::Vector3d::UnitX();
+  base.col(1) = -Eigen::Vector3d::UnitY();
+  base.col(2) = Eigen::Vector3d::UnitZ();
+  return Eigen::AngleAxisd(yaw * kDeg, Eigen::Vector3d::UnitY()).toRotationMatrix() * base *
+         Eigen::AngleAxisd(pitch * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix() *
+         Eigen::AngleAxisd(roll * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+class SceneBuilder {
+ public:
+  explicit SceneBuilder(const SceneSpec& spec) : spec_(spec), rng_(12345) {
+    scene_.R = camera_axes(spec.yaw_deg, spec.pitch_deg, spec.roll_deg);
+    scene_.cam = spec.cam;
+    scene_.up_cam = scene_.R.transpose() * Eigen::Vector3d::UnitY();
+  }
+
+  // One patch of `points` points centred at `c` (tunnel frame) with true inward normal `n`,
+  // spanning `du` x `dv` along the unit directions u, v.
+  void patch(WallClass truth, const Eigen::Vector3d& c, Eigen::Vector3d n, const Eigen::Vector3d& u,
+             const Eigen::Vector3d& v, double du, double dv, int points, bool outlier = false) {
+    std::normal_distribution<double> g(0.0, 1.0);
+    // Small random rotation of the normal: the noise of a fitted plane.
+    Eigen::Vector3d axis = n.cross(Eigen::Vector3d(g(rng_), g(rng_), g(rng_))).normalized();
+    n = Eigen::AngleAxisd(spec_.normal_noise_deg * kDeg * g(rng_), axis) * n;
+    const Eigen::Vector3d centre = c + spec_.offset_noise_m * g(rng_) * n;
+    PlaneSegment p;
+    p.id = static_cast<int>(scene_.planes.planes.size()) + 1;
+    p.normal = scene_.R.transpose() * n;
+    p.mean_normal = p.normal;
+    p.centroid = scene_.R.transpose() * (centre - scene_.cam);
+    p.offset_m = -p.normal.dot(p.centroid);
+    p.points = points;
+    p.area_m2 = du * dv;
+    for (double su : {-0.5, 0.5})
+      for (double sv : {-0.5, 0.5}) {
+        const Eigen::Vector3d q = centre + su * du * u + (su < 0 ? sv : -sv) * dv * v;
+        p.contour.push_back(scene_.R.transpose() * (q - scene_.cam));
+      }
+    scene_.planes.planes.push_back(p);
+    scene_.truth.push_back(truth);
+    scene_.is_outlier.push_back(outlier);
+  }
+
+  Scene build() {
+    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(),
+                          Z = Eigen::Vector3d::UnitZ();
+    const Eigen::AngleAxisd tb(spec_.tilt_top_bottom_deg * kDeg, Z);
+    const Eigen::AngleAxisd tl(spec_.tilt_left_deg * kDeg, Z);
+    struct WallSpec { WallClass cls; Eigen::Vector3d n, across; double pos, span; };
+    const WallSpec walls[] = {
+        {WallClass::Left, tl * X, Y, -kW / 2, kH},
+        {WallClass::Right, -X, Y, kW / 2, kH},
+        {WallClass::Top, tb * -Y, X, kH / 2, kW},
+        {WallClass::Bottom, tb * Y, X, -kH / 2, kW},
+    };
+    for (const auto& w : walls) {
+      if (!spec_.with[static_cast<int>(w.cls)]) continue;
+      // Outermost surface: a point of the wall plane is -n * |pos| from the centre line.
+      const bool side = w.cls == WallClass::Left || w.cls == WallClass::Right;
+      const Eigen::Vector3d outer = w.pos * (side ? X : Y);  // on the outermost surface
+      for (int k = 0; k < 6; ++k) {
+        const double z = 0.6 + 0.4 * k;
+        const double edge = 0.5 * w.span - 0.5 * kBand;  // centre of the riveted band
+        for (double s : {-1.0, 1.0})
+          patch(w.cls, outer + s * edge * w.across + z * Z, w.n, Z, w.across, 0.3, 0.12, 400);
+        for (double s : {-1.0, 1.0})
+          patch(w.cls, outer + spec_.proud_m * w.n + s * 0.2 * w.span / 1.3 * w.across + z * Z,
+                w.n, Z, w.across, 0.3, 0.25, 900);
+      }
+    }
+    if (spec_.outliers) {
+      // Left wall: 5 deg off, 30 mm outside the wall; would widen the tunnel if kept.
+      if (spec_.with[0])
+        patch(WallClass::Left, Eigen::Vector3d(-kW / 2 - 0.03, 0.0, 2.0),
+              Eigen::AngleAxisd(5 * kDeg, Y) * X, Z, Y, 0.2, 0.2, 2000, true);
+      // Roof: 15 deg off (beyond outlier_max_deg).
+      if (spec_.with[2])
+        patch(WallClass::Top, Eigen::Vector3d(0.0, kH / 2 + 0.02, 1.5),
+              Eigen::AngleAxisd(15 * kDeg, X) * -Y, Z, X, 0.2, 0.2, 800, true);
+      // Right wall: a small stray zone 25 mm outside, correct normal, too few points to bound.
+      if (spec_.with[1])
+        patch(WallClass::Right, Eigen::Vector3d(kW / 2 + 0.025, 0.0, 1.2), -X, Z, Y, 0.1, 0.1, 100);
+      // Manhole rim plate facing the camera across the tunnel.
+      patch(WallClass::Unassigned, Eigen::Vector3d(0.0, 0.0, 3.2), -Z, X, Y, 0.3, 0.3, 1500);
+    }
+    return scene_;
+  }
+
+ private:
+  SceneSpec spec_;
+  std::mt19937 rng_;
+  Scene scene_;
+};
+
+TunnelOptions fine_options() {
+  TunnelOptions o;
+  o.zone_cluster_m = 0.004;  // below the 8 mm plate step, so the middle plates are their own zone
+  return o;
+}
+
+TunnelMap detect(const Scene& s, const TunnelOptions& o = fine_options(),
+                 const TunnelContext* ctx = nullptr) {
+  return detect_tunnel(s.planes, s.up_cam, o, ctx);
+}
+
+TEST(TunnelDetector, MeasuresWidthAndHeightOfTheOutermostZones) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  const TunnelMap m = detect(s);
+  ASSERT_TRUE(m.detected) << m.status << ": " << m.reason;
+  EXPECT_EQ(m.status, "ok");
+  EXPECT_NEAR(m.width_m, kW, 0.001);
+  EXPECT_NEAR(m.height_m, kH, 0.001);
+  EXPECT_EQ(m.timings_ms.count("tunnel"), 1u);
+  // Left wall: edge zones (outermost) and middle plates 8 mm proud are separate clusters; the
+  // wall plane is the outermost one.
+  const Wall& left = m.wall(WallClass::Left);
+  ASSERT_EQ(left.clusters.size(), 2u);
+  EXPECT_NEAR(left.clusters[0].offset_m - left.clusters[1].offset_m, 0.008, 0.001);
+  EXPECT_EQ(left.clusters[0].planes, 12);
+  EXPECT_EQ(left.clusters[0].points, 12 * 400);
+  EXPECT_DOUBLE_EQ(left.offset_m, left.clusters[0].offset_m);
+  EXPECT_NEAR(left.offset_m, kW / 2 + 0.12, 0.001);  // camera is 0.12 m right of centre
+  // Right wall: the 100-point stray zone is listed but does not bound the tunnel.
+  const Wall& right = m.wall(WallClass::Right);
+  ASSERT_EQ(right.clusters.size(), 3u);
+  EXPECT_EQ(right.clusters[0].points, 100);
+  EXPECT_NEAR(right.clusters[0].offset_m, kW / 2 - 0.12 + 0.025, 0.001);
+  EXPECT_NEAR(right.offset_m, kW / 2 - 0.12, 0.001);
+  // Orthonormal frame, axis away from the camera, up matching the truth.
+  EXPECT_NEAR(m.axis_dir.norm(), 1.0, 1e-12);
+  EXPECT_GT(m.axis_dir.z(), 0.0);
+  EXPECT_NEAR(m.up.dot(m.axis_dir), 0.0, 1e-12);
+  EXPECT_GT((s.R * m.up).dot(Eigen::Vector3d::UnitY()), std::cos(0.2 * kDeg));
+  EXPECT_GT((s.R * m.axis_dir).dot(Eigen::Vector3d::UnitZ()), std::cos(0.2 * kDeg));
+}
+
+TEST(TunnelDetector, FlagsOutliersAndLeavesTheManholeUnassigned) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  const TunnelMap m = detect(s);
+  ASSERT_TRUE(m.detected) << m.reason;
+  ASSERT_EQ(m.plane_classes.size(), s.planes.planes.size());
+  ASSERT_EQ(m.plane_outlier.size(), s.planes.planes.size());
+  int outliers = 0;
+  for (size_t i = 0; i < s.truth.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(m.plane_candidate_classes[i], s.truth[i]);
+    EXPECT_EQ(m.plane_outlier[i], s.is_outlier[i]);
+    EXPECT_EQ(m.plane_classes[i], s.is_outlier[i] ? WallClass::Unassigned : s.truth[i]);
+    outliers += m.plane_outlier[i];
+  }
+  EXPECT_EQ(outliers, 2);
+  EXPECT_EQ(m.wall(WallClass::Left).outlier_planes, 1);
+  EXPECT_EQ(m.wall(WallClass::Top).outlier_planes, 1);
+  EXPECT_EQ(m.wall(WallClass::Left).inlier_planes, 24);
+  EXPECT_LT(m.wall(WallClass::Left).normal_sd_deg, 0.5);
+  EXPECT_GT(m.wall(WallClass::Left).normal_sd_deg, 0.02);
+}
+
+TEST(TunnelDetector, ClassesHoldForRolledAndPitchedCameras) {
+  const double poses[][3] = {{0, 0, 0}, {15, -30, 90}, {-20, 35, -60}, {5, 10, 175}, {-10, -45, 250}};
+  for (const auto& pose : poses) {
+    SCOPED_TRACE(testing::Message() << "yaw " << pose[0] << " pitch " << pose[1] << " roll " << pose[2]);
+    SceneSpec spec;
+    spec.yaw_deg = pose[0];
+    spec.pitch_deg = pose[1];
+    spec.roll_deg = pose[2];
+    const Scene s = SceneBuilder(spec).build();
+    const TunnelMap m = detect(s);
+    ASSERT_TRUE(m.detected) << m.status << ": " << m.reason;
+    for (size_t i = 0; i < s.truth.size(); ++i) EXPECT_EQ(m.plane_candidate_classes[i], s.truth[i]) << i;
+    EXPECT_NEAR(m.width_m, kW, 0.001);
+    EXPECT_NEAR(m.height_m, kH, 0.001);
+  }
+}
+
+TEST(TunnelDetector, DefaultClusterGapMergesAn8mmStepButSeparatesA15mmStep) {
+  // zone_cluster_m = 10 mm (paper): an 8 mm plate step is one zone, a 15 mm step two.
+  SceneSpec spec;
+  spec.proud_m = 0.015;
+  const TunnelMap apart = detect(SceneBuilder(spec).build(), TunnelOptions());
+  ASSERT_TRUE(apart.detected) << apart.reason;
+  EXPECT_EQ(apart.wall(WallClass::Left).clusters.size(), 2u);
+  EXPECT_NEAR(apart.width_m, kW, 0.001);
+  const TunnelMap merged = detect(SceneBuilder(SceneSpec()).build(), TunnelOptions());
+  ASSERT_TRUE(merged.detected) << merged.reason;
+  EXPECT_EQ(merged.wall(WallClass::Left).clusters.size(), 1u);
+  EXPECT_LT(merged.width_m, kW - 0.004);  // pulled inwards by the middle plates
+}
+
+TEST(TunnelDetector, TooFewPlanes) {
+  Scene s = SceneBuilder(SceneSpec()).build();
+  s.planes.planes.resize(3);
+  const TunnelMap m = detect(s);
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "too_few_planes");
+  EXPECT_NE(m.reason.find("3 planes"), std::string::npos) << m.reason;
+  EXPECT_EQ(m.plane_classes.size(), 3u);
+  EXPECT_EQ(m.plane_outlier.size(), 3u);
+}
+
+TEST(TunnelDetector, OneFlatWallIsNotATunnel) {
+  SceneSpec spec;
+  spec.with[1] = spec.with[2] = spec.with[3] = false;
+  spec.outliers = false;
+  const Scene s = SceneBuilder(spec).build();
+  ASSERT_EQ(s.planes.planes.size(), 24u);
+  const TunnelMap m = detect(s);
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "missing_wall");
+  for (const char* w : {"right wall: 0 planes", "top wall: 0 planes", "bottom wall: 0 planes"})
+    EXPECT_NE(m.reason.find(w), std::string::npos) << m.reason;
+  EXPECT_EQ(m.reason.find("left"), std::string::npos) << m.reason;
+}
+
+TEST(TunnelDetector, MissingTop) {
+  SceneSpec spec;
+  spec.with[static_cast<int>(WallClass::Top)] = false;
+  const TunnelMap m = detect(SceneBuilder(spec).build());
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "missing_wall");
+  EXPECT_EQ(m.reason, "top wall: 0 planes");
+}
+
+TEST(TunnelDetector, OutOfTemplateWhenThePriorIsNarrowed) {
+  TunnelOptions o = fine_options();
+  o.width_max_m = 0.70;
+  const TunnelMap m = detect(SceneBuilder(SceneSpec()).build(), o);
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "out_of_template");
+  EXPECT_EQ(m.reason, "width 0.820 m outside [0.30, 0.70]");
+  EXPECT_NEAR(m.width_m, kW, 0.001);  // still reported for inspection
+  o = fine_options();
+  o.height_min_m = 1.5;
+  const TunnelMap h = detect(SceneBuilder(SceneSpec()).build(), o);
+  EXPECT_EQ(h.status, "out_of_template");
+  EXPECT_NE(h.reason.find("height 1.300 m outside [1.50, 3.00]"), std::string::npos) << h.reason;
+}
+
+TEST(TunnelDetector, ContextOfEarlierScans) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  TunnelMap prior;
+  prior.detected = true;
+  prior.height_m = kH;
+  TunnelContext far;
+  prior.width_m = 0.90;  // 80 mm wider than this scan: beyond the 40 mm tolerance
+  far.accept(prior);
+  const TunnelMap bad = detect(s, fine_options(), &far);
+  EXPECT_FALSE(bad.detected);
+  EXPECT_EQ(bad.status, "inconsistent_with_context");
+  EXPECT_NE(bad.reason.find("width 0.820 m differs from the context's 0.900 m by more than 40 mm"),
+            std::string::npos) << bad.reason;
+  TunnelContext near;
+  prior.width_m = 0.85;  // 30 mm: within tolerance
+  near.accept(prior);
+  const TunnelMap good = detect(s, fine_options(), &near);
+  EXPECT_TRUE(good.detected) << good.reason;
+  near.accept(good);
+  EXPECT_NEAR(near.width_m(), 0.5 * (0.85 + good.width_m), 1e-12);
+  TunnelContext empty;
+  EXPECT_TRUE(detect(s, fine_options(), &empty).detected);
+}
+
+TEST(TunnelContext, MediansOfDetectedMapsOnly) {
+  TunnelContext c;
+  EXPECT_TRUE(c.empty());
+  TunnelMap m;
+  m.detected = true;
+  for (double w : {0.80, 0.90, 0.82}) {
+    m.width_m = w;
+    m.height_m = 2 * w;
+    c.accept(m);
+  }
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.82);
+  EXPECT_DOUBLE_EQ(c.height_m(), 1.64);
+  m.width_m = 0.84;
+  c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.83);
+  m.detected = false;
+  m.width_m = 5.0;
+  c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.83);
+  c.clear();
+  EXPECT_TRUE(c.empty());
+}
+
+TEST(TunnelDetector, NonPerpendicularPairs) {
+  SceneSpec spec;
+  spec.tilt_top_bottom_deg = 20;  // roof and floor parallel to each other, 70 deg to the walls
+  const TunnelMap m = detect(SceneBuilder(spec).build());
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "not_rectangular");
+  EXPECT_NE(m.reason.find("20.0 deg from perpendicular"), std::string::npos) << m.reason;
+}
+
+TEST(TunnelDetector, NoParallelPair) {
+  SceneSpec spec;
+  spec.tilt_left_deg = 20;
+  const TunnelMap m = detect(SceneBuilder(spec).build());
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, "no_parallel_pair");
+  EXPECT_NE(m.reason.find("left and right walls are 20.0 deg"), std::string::npos) << m.reason;
+}
+
+TEST(TunnelDetector, WallRectanglesAndZones) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  const TunnelOptions o = fine_options();
+  const TunnelMap m = detect(s, o);
+  ASSERT_TRUE(m.detected) << m.reason;
+  // Centre line at the tunnel centre, at the nearest visible wall point (z = 0.6 - 0.15).
+  const Eigen::Vector3d c = s.to_tunnel(m.axis_point);
+  EXPECT_NEAR(c.x(), 0.0, 0.001);
+  EXPECT_NEAR(c.y(), 0.0, 0.001);
+  EXPECT_NEAR(c.z(), 0.45, 0.005);
+  EXPECT_DOUBLE_EQ(m.extent_min_m, 0.0);
+  EXPECT_NEAR(m.extent_max_m, 2.75 - 0.45, 0.005);
+
+  for (WallClass cls : {WallClass::Left, WallClass::Right, WallClass::Top, WallClass::Bottom}) {
+    SCOPED_TRACE(wall_class_name(cls));
+    const Wall& w = m.wall(cls);
+    EXPECT_TRUE(w.found);
+    EXPECT_EQ(w.cls, cls);
+    for (const auto& p : w.boundary) EXPECT_NEAR(w.normal.dot(p) + w.offset_m, 0.0, 1e-9);
+    // Counter-clockwise seen from inside: right-hand normal of the corner loop is +normal.
+    const Eigen::Vector3d turn = (w.boundary[1] - w.boundary[0]).cross(w.boundary[2] - w.boundary[1]);
+    EXPECT_GT(turn.normalized().dot(w.normal), 1.0 - 1e-9);
+    const double along = (w.boundary[1] - w.boundary[0]).norm();
+    const double across = (w.boundary[2] - w.boundary[1]).norm();
+    EXPECT_NEAR(along, m.extent_max_m - m.extent_min_m, 1e-9);
+    const bool side = cls == WallClass::Left || cls == WallClass::Right;
+    EXPECT_NEAR(across, side ? m.height_m : m.width_m, 1e-9);
+
+    ASSERT_EQ(w.zones.size(), 3u);
+    EXPECT_EQ(w.zones[0].kind, ZoneKind::Forbidden);
+    EXPECT_EQ(w.zones[1].kind, ZoneKind::Traversable);
+    EXPECT_EQ(w.zones[2].kind, ZoneKind::Forbidden);
+    for (const auto& z : w.zones) {
+      for (const auto& p : z.corners) EXPECT_NEAR(w.normal.dot(p) + w.offset_m, 0.0, 1e-9);
+      EXPECT_NEAR((z.corners[1] - z.corners[0]).norm(), along, 1e-9);
+    }
+    EXPECT_NEAR((w.zones[0].corners[2] - w.zones[0].corners[1]).norm(), o.forbidden_band_m, 1e-9);
+    EXPECT_NEAR((w.zones[2].corners[2] - w.zones[2].corners[1]).norm(), o.forbidden_band_m, 1e-9);
+    EXPECT_NEAR((w.zones[1].corners[2] - w.zones[1].corners[1]).norm(), across - 2 * o.forbidden_band_m, 1e-9);
+    // The bands hug the corners, the middle lies between them with no gap.
+    EXPECT_NEAR((w.zones[0].corners[0] - w.boundary[0]).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((w.zones[2].corners[2] - w.boundary[2]).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((w.zones[1].corners[0] - w.zones[0].corners[3]).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((w.zones[1].corners[3] - w.zones[2].corners[0]).norm(), 0.0, 1e-9);
+  }
+  // Adjacent walls share their corner edges.
+  const auto& L = m.wall(WallClass::Left).boundary;
+  const auto& T = m.wall(WallClass::Top).boundary;
+  int shared = 0;
+  for (const auto& p : L)
+    for (const auto& q : T) shared += (p - q).norm() < 1e-9;
+  EXPECT_EQ(shared, 2);
+}
+
+TEST(TunnelDetector, EmptyContoursFallBackToCentroidsForTheExtent) {
+  Scene s = SceneBuilder(SceneSpec()).build();
+  for (auto& p : s.planes.planes) p.contour.clear();
+  const TunnelMap m = detect(s);
+  ASSERT_TRUE(m.detected) << m.reason;
+  EXPECT_NEAR(s.to_tunnel(m.axis_point).z(), 0.6, 0.005);  // nearest centroid
+  EXPECT_NEAR(m.extent_max_m, 2.6 - 0.6, 0.005);
+  EXPECT_NEAR(m.width_m, kW, 0.001);
+}
+
+TEST(TunnelDetector, NarrowWallIsAllForbidden) {
+  TunnelOptions o = fine_options();
+  o.forbidden_band_m = 0.45;  // 2 bands = 0.90 m > width 0.82: roof and floor all riveted
+  const TunnelMap m = detect(SceneBuilder(SceneSpec()).build(), o);
+  ASSERT_TRUE(m.detected) << m.reason;
+  ASSERT_EQ(m.wall(WallClass::Top).zones.size(), 1u);
+  EXPECT_EQ(m.wall(WallClass::Top).zones[0].kind, ZoneKind::Forbidden);
+  EXPECT_EQ(m.wall(WallClass::Left).zones.size(), 3u);  // 1.30 m > 0.90 m
+}
+
+TEST(ZoneClustering, GapStartsANewClusterAndMeansArePointWeighted) {
+  const auto c = cluster_zone_positions({{0.500, 100}, {0.503, 300}, {0.520, 50}, {0.528, 1}}, 0.010);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_NEAR(c[0].offset_m, (0.520 * 50 + 0.528 * 1) / 51.0, 1e-12);  // outermost first
+  EXPECT_EQ(c[0].points, 51);
+  EXPECT_NEAR(c[1].offset_m, (0.500 * 100 + 0.503 * 300) / 400.0, 1e-12);
+  EXPECT_EQ(c[1].planes, 2);
+  EXPECT_EQ(outermost_supported_cluster(c, 300), 1);
+  EXPECT_EQ(outermost_supported_cluster(c, 50), 0);
+  EXPECT_EQ(outermost_supported_cluster(c, 1000), -1);
+}
+
+TEST(TunnelDetector, RejectsAZeroUpVector) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  EXPECT_THROW(detect_tunnel(s.planes, Eigen::Vector3d::Zero(), TunnelOptions(), nullptr),
+               ParameterError);
+  EXPECT_STREQ(wall_class_name(WallClass::Bottom), "bottom");
+  EXPECT_STREQ(wall_class_name(WallClass::Unassigned), "unassigned");
+}
+
+}  // namespace
+}  // namespace tunnelmap
