@@ -1,0 +1,128 @@
+#include "core/sim/sim_config.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/util/error.h"
+
+namespace tunnelmap {
+
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+void check_range(const char* name, double v, double lo, double hi) {
+  if (!std::isfinite(v) || v < lo || v > hi)
+    throw ParameterError("simulator: " + std::string(name) + " = " + fmt(v) +
+                         " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
+}
+
+}  // namespace
+
+SimConfig SimConfig::from_preset(const std::string& name) {
+  SimConfig c;
+  if (name == "lab") {
+    // Experiment 1: lab rig 0.82 x 1.30 m, robot on the roof or a wall, 3 poses x 10 frames.
+    c.preset = "lab";
+    c.width_m = 0.82;
+    c.height_m = 1.30;
+    c.frames = 30;
+    c.end_wall_distance_m = 3.0;
+    c.plate_thickness_m = {0.008, 0.008, 0.008, 0.008};
+    c.rust_patches_per_wall = 2;
+    c.rust_roughness_m = 0.001;
+    c.rust_dropout = 0.25;
+    c.speckle_dropout = 0.01;
+    c.poses = {
+        {0.0, 0.85, 0.0, -15.0, 0.0},    // hanging from the roof, pitched down
+        {0.27, 0.50, 0.0, -3.0, -10.0},  // near the left wall, turned away from it
+        {-0.18, 0.35, 10.0, 5.0, 8.0},   // low on the right, rolled and yawed
+    };
+    c.jitter_translation_m = 0.002;
+    c.jitter_rotation_deg = 0.2;
+    return c;
+  }
+  if (name == "field") {
+    // Experiment 2: steel bridge 0.84 x 1.20 m, frames at 5, 3 and 1.8 m from the manhole,
+    // rusty surfaces, plates of different thickness per wall, rougher data.
+    c.preset = "field";
+    c.width_m = 0.84;
+    c.height_m = 1.20;
+    c.frames = 30;
+    c.manhole_distances_m = {5.0, 3.0, 1.8};
+    c.end_wall_distance_m.reset();
+    c.noise_scale = 1.3;
+    c.plate_thickness_m = {0.010, 0.006, 0.012, 0.008};
+    c.rust_patches_per_wall = 6;
+    c.rust_roughness_m = 0.003;
+    c.rust_dropout = 0.40;
+    c.speckle_dropout = 0.02;
+    c.poses = {
+        {0.15, 0.55, 3.0, -5.0, -8.0},
+        {-0.10, 0.75, 0.0, -10.0, 0.0},
+        {0.0, 0.40, -4.0, 5.0, 5.0},
+    };
+    c.jitter_translation_m = 0.003;
+    c.jitter_rotation_deg = 0.3;
+    return c;
+  }
+  throw ParameterError("simulator: unknown preset '" + name + "' (expected lab or field)");
+}
+
+void SimConfig::validate() const {
+  if (preset != "lab" && preset != "field")
+    throw ParameterError("simulator: unknown preset '" + preset + "' (expected lab or field)");
+  check_range("width_m", width_m, 0.3, 5.0);
+  check_range("height_m", height_m, 0.3, 5.0);
+  check_range("frames", frames, 1, 100000);
+  if (distance_to_manhole_m) check_range("distance_to_manhole_m", *distance_to_manhole_m, 0.5, 50.0);
+  for (double d : manhole_distances_m) check_range("manhole_distances_m", d, 0.5, 50.0);
+  if (distance_to_manhole_m || !manhole_distances_m.empty()) {
+    check_range("manhole_width_m", manhole_width_m, 0.05, width_m - 0.02);
+    check_range("manhole_height_m", manhole_height_m, 0.05, height_m - 0.02);
+  }
+  if (end_wall_distance_m) check_range("end_wall_distance_m", *end_wall_distance_m, 0.1, 100.0);
+  check_range("noise_scale", noise_scale, 0.0, 10.0);
+  check_range("dropout_scale", dropout_scale, 0.0, 100.0);
+  check_range("roll_deg", roll_deg, -60.0, 60.0);
+  check_range("pitch_deg", pitch_deg, -60.0, 60.0);
+  check_range("yaw_deg", yaw_deg, -60.0, 60.0);
+  const double min_side = std::min(width_m, height_m);
+  check_range("edge_band_m", edge_band_m, 0.0, 0.5 * min_side - 0.05);
+  for (double t : plate_thickness_m) check_range("plate_thickness_m", t, 0.0, 0.05);
+  check_range("rivet_radius_m", rivet_radius_m, 0.001, 0.05);
+  check_range("rivet_height_m", rivet_height_m, 0.0, rivet_radius_m);
+  check_range("rivet_pitch_m", rivet_pitch_m, 2.0 * rivet_radius_m, 1.0);
+  check_range("rivet_rows_per_band", rivet_rows_per_band, 0, 10);
+  check_range("rust_patches_per_wall", rust_patches_per_wall, 0, 100);
+  check_range("rust_roughness_m", rust_roughness_m, 0.0, 0.02);
+  check_range("rust_dropout", rust_dropout, 0.0, 1.0);
+  check_range("speckle_dropout", speckle_dropout, 0.0, 1.0);
+  check_range("baseline_m", baseline_m, 0.01, 1.0);
+  check_range("subpixel_steps", subpixel_steps, 1, 64);
+  check_range("max_depth_m", max_depth_m, 0.5, 65.0);  // 16-bit millimetres
+  check_range("min_depth_m", min_depth_m, 0.0, max_depth_m - 0.1);
+  check_range("grazing_dropout_full_deg", grazing_dropout_full_deg, 1.0, 90.0);
+  check_range("grazing_dropout_start_deg", grazing_dropout_start_deg, 0.0,
+              grazing_dropout_full_deg - 0.1);
+  if (poses.empty()) throw ParameterError("simulator: no camera poses configured");
+  const double max_t = std::max(std::max(plate_thickness_m[0], plate_thickness_m[1]),
+                                std::max(plate_thickness_m[2], plate_thickness_m[3]));
+  for (const SimCameraPose& p : poses) {
+    // Keep the camera at least 2 cm inside the middle plates.
+    check_range("pose y_rel", p.y_rel, -0.5 + (max_t + 0.02) / width_m, 0.5 - (max_t + 0.02) / width_m);
+    check_range("pose z_rel", p.z_rel, (max_t + 0.02) / height_m, 1.0 - (max_t + 0.02) / height_m);
+    check_range("pose roll_deg", p.roll_deg, -60.0, 60.0);
+    check_range("pose pitch_deg", p.pitch_deg, -60.0, 60.0);
+    check_range("pose yaw_deg", p.yaw_deg, -60.0, 60.0);
+  }
+  check_range("jitter_translation_m", jitter_translation_m, 0.0, 0.05);
+  check_range("jitter_rotation_deg", jitter_rotation_deg, 0.0, 5.0);
+  check_range("frame_interval_s", frame_interval_s, 1e-6, 3600.0);
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,88 @@
+#pragma once
+// SimConfig: every knob of the simulated tunnel depth camera (core/sim). from_preset() fills
+// the values for the paper's two experiments; validate() range-checks them. Geometry, sensor
+// model and presets are described in docs/simulator.md.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tunnelmap {
+
+// A nominal camera pose inside the tunnel cross-section. The position is relative to the
+// cross-section so that presets stay valid when width/height are overridden:
+// y = y_rel * W (left positive), z = z_rel * H (floor = 0). Angles turn the neutral
+// "looking along +X" orientation: yaw about world Z (left positive), pitch nose-up positive,
+// roll about the viewing axis (clockwise as seen by the camera positive).
+struct SimCameraPose {
+  double y_rel = 0.0;
+  double z_rel = 0.5;
+  double roll_deg = 0.0;
+  double pitch_deg = 0.0;
+  double yaw_deg = 0.0;
+};
+
+// Wall order used for per-wall arrays: left (y = +W/2), right (y = -W/2), top (z = H),
+// bottom (z = 0).
+enum SimWall { kSimLeft = 0, kSimRight = 1, kSimTop = 2, kSimBottom = 3 };
+
+// Default-constructed = the lab preset.
+struct SimConfig {
+  std::string preset = "lab";  // "lab" | "field"
+  double width_m = 0.82;       // W: between the outermost (edge-band) surfaces
+  double height_m = 1.30;      // H
+  int frames = 30;             // total frames, split into contiguous pose groups
+
+  // Manhole plate. `distance_to_manhole_m` forces one distance for every frame; otherwise the
+  // groups cycle through `manhole_distances_m` (empty = no manhole plate).
+  std::optional<double> distance_to_manhole_m;
+  std::vector<double> manhole_distances_m;
+  double manhole_width_m = 0.45;   // elliptical opening, centred in the cross-section
+  double manhole_height_m = 0.70;
+  // End wall: this far beyond the manhole plate if there is one, else beyond the camera.
+  std::optional<double> end_wall_distance_m = 3.0;
+
+  unsigned seed = 1;
+  double noise_scale = 1.0;    // multiplies axial/lateral noise and rust roughness
+  double dropout_scale = 1.0;  // multiplies every dropout probability
+  double roll_deg = 0.0, pitch_deg = 0.0, yaw_deg = 0.0;  // added to every pose
+
+  // Walls: each is edge band | middle plate | edge band across its width.
+  double edge_band_m = 0.15;                                    // forbidden-zone width
+  std::array<double, 4> plate_thickness_m{0.008, 0.008, 0.008, 0.008};  // left,right,top,bottom
+  // Rivets: spherical-cap domes in rows along X on every edge band (rows staggered).
+  double rivet_radius_m = 0.009;  // base radius of the dome
+  double rivet_height_m = 0.006;
+  double rivet_pitch_m = 0.070;
+  int rivet_rows_per_band = 2;
+  // Rust: elliptic patches per wall with roughness and extra dropout.
+  int rust_patches_per_wall = 2;
+  double rust_roughness_m = 0.001;  // amplitude of the surface relief on rust
+  double rust_dropout = 0.25;       // extra dropout probability on rust
+  double speckle_dropout = 0.01;    // random isolated dropouts everywhere
+
+  // Sensor (structured light, PrimeSense / Structure Sensor class).
+  double baseline_m = 0.075;
+  int subpixel_steps = 8;           // disparity quantised to 1/subpixel_steps pixel
+  bool quantize_disparity = true;
+  double min_depth_m = 0.4;
+  double max_depth_m = 6.0;
+  double grazing_dropout_start_deg = 70.0;  // dropout probability 0 here ...
+  double grazing_dropout_full_deg = 85.0;   // ... rising to 1 here
+
+  // Camera poses and per-frame jitter (so frames of one pose differ).
+  // Default = lab preset: hanging from the roof, near the left wall, low right rolled/yawed.
+  std::vector<SimCameraPose> poses{{0.0, 0.85, 0.0, -15.0, 0.0},
+                                   {0.27, 0.50, 0.0, -3.0, -10.0},
+                                   {-0.18, 0.35, 10.0, 5.0, 8.0}};
+  double jitter_translation_m = 0.002;
+  double jitter_rotation_deg = 0.2;
+  double frame_interval_s = 1.0 / 30.0;
+
+  // Throws ParameterError (one line) for unknown names.
+  static SimConfig from_preset(const std::string& name);
+  // Throws ParameterError (one line) for the first out-of-range value.
+  void validate() const;
+};
+
+}  // namespace tunnelmap

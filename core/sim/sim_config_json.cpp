@@ -1,0 +1,138 @@
+#include "core/sim/sim_config_json.h"
+
+#include "core/util/error.h"
+
+namespace tunnelmap {
+
+using nlohmann::json;
+
+json sim_config_to_json(const SimConfig& c) {
+  json j;
+  j["preset"] = c.preset;
+  j["width_m"] = c.width_m;
+  j["height_m"] = c.height_m;
+  j["frames"] = c.frames;
+  j["distance_to_manhole_m"] = c.distance_to_manhole_m ? json(*c.distance_to_manhole_m) : json();
+  j["manhole_distances_m"] = c.manhole_distances_m;
+  j["manhole_width_m"] = c.manhole_width_m;
+  j["manhole_height_m"] = c.manhole_height_m;
+  j["end_wall_distance_m"] = c.end_wall_distance_m ? json(*c.end_wall_distance_m) : json();
+  j["seed"] = c.seed;
+  j["noise_scale"] = c.noise_scale;
+  j["dropout_scale"] = c.dropout_scale;
+  j["roll_deg"] = c.roll_deg;
+  j["pitch_deg"] = c.pitch_deg;
+  j["yaw_deg"] = c.yaw_deg;
+  j["edge_band_m"] = c.edge_band_m;
+  j["plate_thickness_m"] = {{"left", c.plate_thickness_m[kSimLeft]},
+                            {"right", c.plate_thickness_m[kSimRight]},
+                            {"top", c.plate_thickness_m[kSimTop]},
+                            {"bottom", c.plate_thickness_m[kSimBottom]}};
+  j["rivet_radius_m"] = c.rivet_radius_m;
+  j["rivet_height_m"] = c.rivet_height_m;
+  j["rivet_pitch_m"] = c.rivet_pitch_m;
+  j["rivet_rows_per_band"] = c.rivet_rows_per_band;
+  j["rust_patches_per_wall"] = c.rust_patches_per_wall;
+  j["rust_roughness_m"] = c.rust_roughness_m;
+  j["rust_dropout"] = c.rust_dropout;
+  j["speckle_dropout"] = c.speckle_dropout;
+  j["baseline_m"] = c.baseline_m;
+  j["subpixel_steps"] = c.subpixel_steps;
+  j["quantize_disparity"] = c.quantize_disparity;
+  j["min_depth_m"] = c.min_depth_m;
+  j["max_depth_m"] = c.max_depth_m;
+  j["grazing_dropout_start_deg"] = c.grazing_dropout_start_deg;
+  j["grazing_dropout_full_deg"] = c.grazing_dropout_full_deg;
+  json poses = json::array();
+  for (const SimCameraPose& p : c.poses)
+    poses.push_back({{"y_rel", p.y_rel}, {"z_rel", p.z_rel}, {"roll_deg", p.roll_deg},
+                     {"pitch_deg", p.pitch_deg}, {"yaw_deg", p.yaw_deg}});
+  j["poses"] = poses;
+  j["jitter_translation_m"] = c.jitter_translation_m;
+  j["jitter_rotation_deg"] = c.jitter_rotation_deg;
+  j["frame_interval_s"] = c.frame_interval_s;
+  return j;
+}
+
+namespace {
+
+template <typename T>
+void read(const json& j, const char* key, T& out) {
+  if (j.contains(key)) out = j.at(key).get<T>();
+}
+
+template <typename T>
+void read_optional(const json& j, const char* key, std::optional<T>& out) {
+  if (!j.contains(key)) return;
+  if (j.at(key).is_null()) out.reset();
+  else out = j.at(key).get<T>();
+}
+
+}  // namespace
+
+SimConfig sim_config_from_json(const json& j, const std::string& source) {
+  try {
+    if (!j.is_object()) throw InputError(source, "simulator settings must be a JSON object");
+    SimConfig c = SimConfig::from_preset(j.value("preset", std::string("lab")));
+    read(j, "width_m", c.width_m);
+    read(j, "height_m", c.height_m);
+    read(j, "frames", c.frames);
+    read_optional(j, "distance_to_manhole_m", c.distance_to_manhole_m);
+    read(j, "manhole_distances_m", c.manhole_distances_m);
+    read(j, "manhole_width_m", c.manhole_width_m);
+    read(j, "manhole_height_m", c.manhole_height_m);
+    read_optional(j, "end_wall_distance_m", c.end_wall_distance_m);
+    read(j, "seed", c.seed);
+    read(j, "noise_scale", c.noise_scale);
+    read(j, "dropout_scale", c.dropout_scale);
+    read(j, "roll_deg", c.roll_deg);
+    read(j, "pitch_deg", c.pitch_deg);
+    read(j, "yaw_deg", c.yaw_deg);
+    read(j, "edge_band_m", c.edge_band_m);
+    if (j.contains("plate_thickness_m")) {
+      const json& t = j.at("plate_thickness_m");
+      read(t, "left", c.plate_thickness_m[kSimLeft]);
+      read(t, "right", c.plate_thickness_m[kSimRight]);
+      read(t, "top", c.plate_thickness_m[kSimTop]);
+      read(t, "bottom", c.plate_thickness_m[kSimBottom]);
+    }
+    read(j, "rivet_radius_m", c.rivet_radius_m);
+    read(j, "rivet_height_m", c.rivet_height_m);
+    read(j, "rivet_pitch_m", c.rivet_pitch_m);
+    read(j, "rivet_rows_per_band", c.rivet_rows_per_band);
+    read(j, "rust_patches_per_wall", c.rust_patches_per_wall);
+    read(j, "rust_roughness_m", c.rust_roughness_m);
+    read(j, "rust_dropout", c.rust_dropout);
+    read(j, "speckle_dropout", c.speckle_dropout);
+    read(j, "baseline_m", c.baseline_m);
+    read(j, "subpixel_steps", c.subpixel_steps);
+    read(j, "quantize_disparity", c.quantize_disparity);
+    read(j, "min_depth_m", c.min_depth_m);
+    read(j, "max_depth_m", c.max_depth_m);
+    read(j, "grazing_dropout_start_deg", c.grazing_dropout_start_deg);
+    read(j, "grazing_dropout_full_deg", c.grazing_dropout_full_deg);
+    if (j.contains("poses")) {
+      c.poses.clear();
+      for (const json& p : j.at("poses")) {
+        SimCameraPose q;
+        read(p, "y_rel", q.y_rel);
+        read(p, "z_rel", q.z_rel);
+        read(p, "roll_deg", q.roll_deg);
+        read(p, "pitch_deg", q.pitch_deg);
+        read(p, "yaw_deg", q.yaw_deg);
+        c.poses.push_back(q);
+      }
+    }
+    read(j, "jitter_translation_m", c.jitter_translation_m);
+    read(j, "jitter_rotation_deg", c.jitter_rotation_deg);
+    read(j, "frame_interval_s", c.frame_interval_s);
+    c.validate();
+    return c;
+  } catch (const json::exception& e) {
+    throw InputError(source, std::string("bad simulator settings: ") + e.what());
+  } catch (const ParameterError& e) {
+    throw InputError(source, e.what());
+  }
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,148 @@
+#include "core/sim/sim_dataset_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/sim/sim_config_json.h"
+#include "core/sim/tunnel_simulator.h"
+#include "core/util/atomic_file.h"
+#include "core/util/error.h"
+
+namespace tunnelmap {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool is_tunnelmap_dataset(const fs::path& dir) {
+  std::ifstream in(dir / "dataset.json");
+  if (!in) return false;
+  const json j = json::parse(in, nullptr, /*allow_exceptions=*/false);
+  return j.is_object() && j.value("format", std::string()) == kSimDatasetFormat;
+}
+
+// A folder we may write into: missing, empty, a dataset, or only our image subfolders
+// (left by an interrupted write, which has no dataset.json yet).
+void check_output_folder(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) return;
+  if (!fs::is_directory(dir, ec)) throw InputError(dir.string(), "exists and is not a folder");
+  if (is_tunnelmap_dataset(dir)) return;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const bool ours = e.is_directory() && (name == "depth" || name == "rgb" || name == "gt");
+    if (!ours)
+      throw InputError(dir.string(),
+                       "folder is not empty and is not a tunnelmap dataset; refusing to write "
+                       "into it (choose a new or empty folder)");
+  }
+  if (ec) throw InputError(dir.string(), "cannot list the folder: " + ec.message());
+}
+
+void make_dir(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(dir.string(), "cannot create folder: " + (ec ? ec.message() : "not a folder"));
+}
+
+void write_png(const std::string& path, const cv::Mat& image) {
+  write_path_atomically(path, [&](const std::string& tmp) {
+    if (!cv::imwrite(tmp, image)) throw InputError(path, "cannot write PNG");
+  });
+}
+
+std::string frame_name(int i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%06d.png", i);
+  return buf;
+}
+
+json pose_json(const Eigen::Isometry3d& T) {
+  json a = json::array();
+  const Eigen::Matrix4d M = T.matrix();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) a.push_back(M(r, c));
+  return a;
+}
+
+json vec_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+}  // namespace
+
+void write_sim_dataset(const std::string& out_dir, const SimConfig& config) {
+  write_sim_dataset(out_dir, config, nullptr);
+}
+
+void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
+                       const SimProgress& progress) {
+  const TunnelSimulator sim(config);  // validates before touching the disk
+  const fs::path root(out_dir);
+  check_output_folder(root);
+  make_dir(root / "depth");
+  make_dir(root / "rgb");
+  make_dir(root / "gt");
+
+  const Intrinsics K = Intrinsics::primesense_vga();
+  json frames = json::array();
+  for (int i = 0; i < sim.frame_count(); ++i) {
+    const SimFrame f = sim.render(i);
+    const int w = f.frame.width, h = f.frame.height;
+    cv::Mat depth(h, w, CV_16UC1), gt(h, w, CV_16UC1), bgr(h, w, CV_8UC3);
+    for (int v = 0; v < h; ++v)
+      for (int u = 0; u < w; ++u) {
+        const std::size_t k = static_cast<std::size_t>(v) * w + u;
+        depth.at<std::uint16_t>(v, u) = static_cast<std::uint16_t>(f.frame.depth[k]);
+        gt.at<std::uint16_t>(v, u) = f.surface_id[k];
+        const std::uint8_t* rgb = &f.frame.rgb[k * 3];
+        bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(rgb[2], rgb[1], rgb[0]);  // OpenCV writes BGR
+      }
+    const std::string name = frame_name(i);
+    write_png((root / "depth" / name).string(), depth);
+    write_png((root / "rgb" / name).string(), bgr);
+    write_png((root / "gt" / name).string(), gt);
+
+    json fj = {{"depth", "depth/" + name},
+               {"rgb", "rgb/" + name},
+               {"gt_surfaces", "gt/" + name},
+               {"pose", pose_json(*f.frame.pose)},
+               {"timestamp", f.frame.timestamp_s},
+               {"pose_group", f.pose_group}};
+    if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
+    frames.push_back(fj);
+    if (progress) progress(i, sim.frame_count(), (root / "depth" / name).string());
+  }
+
+  json surfaces = json::array();
+  for (const SimSurface& s : sim.surfaces())
+    surfaces.push_back({{"id", s.id},
+                        {"name", s.name},
+                        {"wall", s.wall},
+                        {"zone", s.zone},
+                        {"normal", vec_json(s.normal_world)},
+                        {"offset_m", s.offset_world}});
+  json gt = {{"width_m", config.width_m},
+             {"height_m", config.height_m},
+             {"rivet_id", kSimRivetId},
+             {"surfaces", surfaces}};
+  if (sim.manhole_x()) gt["manhole_x_m"] = *sim.manhole_x();
+
+  const json dataset = {
+      {"format", kSimDatasetFormat},
+      {"intrinsics",
+       {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width},
+        {"height", K.height}}},
+      {"depth_scale", 1000},
+      {"up", {0, 0, 1}},
+      {"frames", frames},
+      {"ground_truth", gt},
+      {"simulator", sim_config_to_json(config)}};
+  write_file_atomically((root / "dataset.json").string(),
+                        [&](std::ostream& out) { out << dataset.dump(2) << "\n"; });
+}
+
+}  // namespace tunnelmap

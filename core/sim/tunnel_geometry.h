@@ -1,0 +1,100 @@
+#pragma once
+// TunnelGeometry: the simulated rectangular steel tunnel and exact ray casting into it.
+// World frame: X along the tunnel axis, Y to the left, Z up. Outer (edge-band) surfaces at
+// y = +-W/2, z = 0 and z = H. Each wall: edge band | middle plate (protruding inward by its
+// thickness) | edge band; the small faces where a plate steps down to an edge band are
+// surfaces too (zone "step"). Rivets are spherical-cap domes on the edge bands. An optional
+// manhole plate (transverse, with an elliptic opening) and an optional end wall close the view.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/sim/sim_config.h"
+
+namespace tunnelmap {
+
+// One planar surface of the simulated tunnel, listed in dataset.json. Plane (world frame):
+// normal_world.dot(x) + offset_world = 0, with the normal pointing into the tunnel / towards
+// the cameras.
+struct SimSurface {
+  int id = 0;
+  std::string name;  // e.g. "left/edge_bottom", "top/middle", "manhole"
+  std::string wall;  // "left","right","top","bottom","manhole","end"
+  std::string zone;  // "edge","middle","step" or "" (manhole plate, end wall)
+  Eigen::Vector3d normal_world = Eigen::Vector3d::Zero();
+  double offset_world = 0.0;
+
+  double distance(const Eigen::Vector3d& x) const { return normal_world.dot(x) + offset_world; }
+};
+
+// Ground-truth id of every rivet pixel (rivets are not planar); 0 = nothing hit.
+constexpr std::uint16_t kSimRivetId = 65535;
+
+namespace sim {
+
+struct RayHit {
+  double t = std::numeric_limits<double>::infinity();  // distance along the unit ray
+  int surface_id = 0;        // SimSurface id, kSimRivetId, or 0 for nothing
+  int wall = -1;             // SimWall of a wall surface or rivet, -1 otherwise
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, towards the ray origin side
+  double plane_offset = 0.0;                         // planar hits: normal.dot(x) + offset = 0
+  bool rivet = false;
+  Eigen::Vector3d sphere_center = Eigen::Vector3d::Zero();  // rivet hits
+  double sphere_radius = 0.0;
+
+  bool hit() const { return surface_id != 0; }
+};
+
+class TunnelGeometry {
+ public:
+  // `manhole_x` / `end_x`: world X of the manhole plate and of the end wall, when present.
+  TunnelGeometry(const SimConfig& config, std::optional<double> manhole_x,
+                 std::optional<double> end_x);
+
+  // Nearest surface along the ray origin + t * dir (dir must be unit length).
+  RayHit cast(const Eigen::Vector3d& origin, const Eigen::Vector3d& dir) const;
+
+  bool on_rust(const RayHit& hit) const;
+  // Signed surface relief on rust (metres, along the inward normal; 0 off rust).
+  double rust_relief_m(const RayHit& hit) const;
+  // Texture value in [-1, 1] (smooth over ~1 cm) for colouring.
+  double texture(const RayHit& hit) const;
+
+  const std::vector<SimSurface>& surfaces() const { return surfaces_; }
+
+ private:
+  struct Wall {
+    Eigen::Vector3d n;   // inward normal
+    double d_outer;      // outer plane: n.x + d_outer = 0
+    Eigen::Vector3d es;  // across the wall, from one corner to the other
+    double s_min, s_max, s_mid_lo, s_mid_hi;  // full wall and middle-plate range along es
+    double thickness;
+    int edge_lo_id, middle_id, edge_hi_id, step_lo_id, step_hi_id;
+    std::vector<double> rivet_row_s, rivet_row_phase;
+  };
+  struct RustPatch {
+    double x, s, rx, rs;  // ellipse centre and semi-axes in wall coordinates
+  };
+
+  void cast_wall(const Wall& w, const Eigen::Vector3d& o, const Eigen::Vector3d& r,
+                 RayHit& best) const;
+  void cast_rivets(const Wall& w, const Eigen::Vector3d& o, const Eigen::Vector3d& r, double h0,
+                   double dn, RayHit& best) const;
+  double value_noise(int wall, double x, double s, double cell) const;
+
+  SimConfig config_;
+  std::vector<Wall> walls_;
+  std::vector<std::vector<RustPatch>> rust_;  // per wall
+  std::vector<SimSurface> surfaces_;
+  std::optional<double> manhole_x_, end_x_;
+  int manhole_id_ = 0, end_id_ = 0;
+  double sphere_radius_ = 0.0, sphere_depth_ = 0.0;  // rivet sphere; centre behind the plane
+  std::uint64_t texture_key_ = 0;
+};
+
+}  // namespace sim
+}  // namespace tunnelmap

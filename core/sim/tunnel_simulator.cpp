@@ -1,0 +1,214 @@
+#include "core/sim/tunnel_simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "core/sim/sensor_model.h"
+#include "core/sim/sim_random.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+const SimConfig& validated(const SimConfig& c) {
+  c.validate();
+  return c;
+}
+
+int distance_count(const SimConfig& c) {
+  return c.distance_to_manhole_m ? 1 : static_cast<int>(c.manhole_distances_m.size());
+}
+
+double distance_at(const SimConfig& c, int group) {
+  return c.distance_to_manhole_m ? *c.distance_to_manhole_m
+                                 : c.manhole_distances_m[group % c.manhole_distances_m.size()];
+}
+
+std::uint8_t to_byte(double v) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+}  // namespace
+
+std::optional<double> TunnelSimulator::compute_manhole_x(const SimConfig& c) {
+  // The plate is fixed in the world; cameras stand `distance` in front of it.
+  if (c.distance_to_manhole_m) return *c.distance_to_manhole_m;
+  if (c.manhole_distances_m.empty()) return std::nullopt;
+  return *std::max_element(c.manhole_distances_m.begin(), c.manhole_distances_m.end());
+}
+
+std::optional<double> TunnelSimulator::compute_end_x(const SimConfig& c) {
+  if (!c.end_wall_distance_m) return std::nullopt;
+  return compute_manhole_x(c).value_or(0.0) + *c.end_wall_distance_m;
+}
+
+TunnelSimulator::TunnelSimulator(SimConfig config)
+    : config_(validated(config)),
+      manhole_x_(compute_manhole_x(config_)),
+      geometry_(config_, manhole_x_, compute_end_x(config_)) {
+  groups_ = std::max(static_cast<int>(config_.poses.size()), distance_count(config_));
+}
+
+const SimSurface* TunnelSimulator::surface(int id) const {
+  for (const SimSurface& s : surfaces())
+    if (s.id == id) return &s;
+  return nullptr;
+}
+
+int TunnelSimulator::pose_group(int index) const {
+  return static_cast<int>(static_cast<long long>(index) * groups_ / config_.frames);
+}
+
+std::optional<double> TunnelSimulator::distance_to_manhole(int index) const {
+  if (distance_count(config_) == 0) return std::nullopt;
+  return distance_at(config_, pose_group(index));
+}
+
+Eigen::Matrix3d TunnelSimulator::camera_rotation(double roll_deg, double pitch_deg,
+                                                 double yaw_deg) {
+  Eigen::Matrix3d look_from_cam;  // columns: camera x, y, z in the look frame (X fwd, Y left, Z up)
+  look_from_cam << 0, 0, 1,
+                  -1, 0, 0,
+                   0, -1, 0;
+  const Eigen::Matrix3d turn =
+      (Eigen::AngleAxisd(yaw_deg * kDeg, Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(-pitch_deg * kDeg, Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(roll_deg * kDeg, Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
+  return turn * look_from_cam;
+}
+
+Eigen::Isometry3d TunnelSimulator::pose(int index) const {
+  const int g = pose_group(index);
+  const SimCameraPose& p = config_.poses[g % config_.poses.size()];
+  const double x = manhole_x_ ? *manhole_x_ - distance_at(config_, g) : 0.0;
+  sim::SimRandom rng(config_.seed, static_cast<std::uint32_t>(index), sim::kStreamPose);
+  const double jt = config_.jitter_translation_m, jr = config_.jitter_rotation_deg;
+  const double jx = rng.normal() * jt, jy = rng.normal() * jt, jz = rng.normal() * jt;
+  const double jroll = rng.normal() * jr, jpitch = rng.normal() * jr, jyaw = rng.normal() * jr;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = camera_rotation(p.roll_deg + config_.roll_deg + jroll,
+                               p.pitch_deg + config_.pitch_deg + jpitch,
+                               p.yaw_deg + config_.yaw_deg + jyaw);
+  T.translation() = Eigen::Vector3d(x + jx, p.y_rel * config_.width_m + jy,
+                                    p.z_rel * config_.height_m + jz);
+  return T;
+}
+
+SimFrame TunnelSimulator::render(int index) const {
+  const Intrinsics K = Intrinsics::primesense_vga();
+  SimFrame out;
+  DepthFrame& f = out.frame;
+  f.width = K.width;
+  f.height = K.height;
+  f.intrinsics = K;
+  f.depth_units_per_m = 1000.0;
+  f.depth.assign(static_cast<std::size_t>(K.width) * K.height, 0.0f);
+  f.rgb.assign(static_cast<std::size_t>(K.width) * K.height * 3, 0);
+  const Eigen::Isometry3d T = pose(index);
+  f.pose = T;
+  f.timestamp_s = index * config_.frame_interval_s;
+  f.source = "simulated " + config_.preset + " frame " + std::to_string(index);
+  out.surface_id.assign(static_cast<std::size_t>(K.width) * K.height, 0);
+  out.pose_group = pose_group(index);
+  out.distance_to_manhole_m = distance_to_manhole(index);
+
+  // Rows are independent (each has its own random stream), so threads do not change the result.
+  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 4);
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k)
+    pool.emplace_back([&, k] { render_rows(index, T, k, threads, out); });
+  render_rows(index, T, 0, threads, out);
+  for (std::thread& t : pool) t.join();
+  return out;
+}
+
+void TunnelSimulator::render_rows(int index, const Eigen::Isometry3d& T, int row_begin,
+                                  int row_step, SimFrame& out) const {
+  const SimConfig& c = config_;
+  const Intrinsics& K = out.frame.intrinsics;
+  const Eigen::Matrix3d R = T.linear();
+  const Eigen::Vector3d o = T.translation();
+  const Eigen::Vector3d cam_z = R.col(2);
+  const double ns = c.noise_scale, ds = c.dropout_scale;
+  const double p_speckle = std::min(1.0, c.speckle_dropout * ds);
+  const double p_rust = std::min(1.0, c.rust_dropout * ds);
+
+  for (int v = row_begin; v < K.height; v += row_step) {
+    sim::SimRandom rng(c.seed, static_cast<std::uint32_t>(index),
+                       sim::kStreamRowBase + static_cast<std::uint32_t>(v));
+    for (int u = 0; u < K.width; ++u) {
+      const std::size_t idx = static_cast<std::size_t>(v) * K.width + u;
+      const Eigen::Vector3d dir = (R * K.ray(u, v)).normalized();
+      const sim::RayHit hit = geometry_.cast(o, dir);
+      out.surface_id[idx] = static_cast<std::uint16_t>(hit.surface_id);
+      if (!hit.hit()) continue;
+      const double cos0 = std::clamp(-hit.normal.dot(dir), 0.0, 1.0);
+      const bool rust = geometry_.on_rust(hit);
+
+      // Colour: Lambert shading from a light at the camera, inverse-square-ish falloff.
+      {
+        const double tex = geometry_.texture(hit);
+        double alb[3] = {0.55, 0.56, 0.58};  // grey steel
+        if (hit.rivet) alb[0] = alb[1] = alb[2] = 0.32;
+        else if (rust) alb[0] = 0.50 + 0.08 * tex, alb[1] = 0.27 + 0.05 * tex, alb[2] = 0.12;
+        else alb[0] += 0.03 * tex, alb[1] += 0.03 * tex, alb[2] += 0.03 * tex;
+        const double light = 0.12 + 1.3 * cos0 / (1.0 + 0.2 * hit.t * hit.t);
+        for (int ch = 0; ch < 3; ++ch)
+          out.frame.rgb[idx * 3 + ch] = to_byte(alb[ch] * light + 0.01 * rng.normal());
+      }
+
+      // Lateral noise: the pixel sees the surface hit by a perturbed ray (edges jitter), but the
+      // depth is that surface intersected with the pixel's own ray, so plane interiors are not
+      // tilted twice (Nguyen et al.'s axial sigma already includes it).
+      sim::RayHit m = hit;
+      if (ns > 0.0) {
+        const double sl = sim::lateral_sigma_px(std::acos(cos0)) * ns;
+        const double du = rng.normal() * sl, dv = rng.normal() * sl;
+        m = geometry_.cast(o, (R * K.ray(u + du, v + dv)).normalized());
+        if (!m.hit()) continue;
+      }
+      double t = m.t;
+      if (m.surface_id != hit.surface_id || m.rivet) {
+        if (m.rivet) {
+          const Eigen::Vector3d oc = o - m.sphere_center;
+          const double b = oc.dot(dir);
+          const double disc = b * b - (oc.squaredNorm() - m.sphere_radius * m.sphere_radius);
+          t = disc >= 0.0 ? -b - std::sqrt(disc) : -1.0;
+          if (t <= 0.0) t = m.point.dot(dir) - o.dot(dir);  // grazing the dome: keep its depth
+        } else {
+          const double nd = m.normal.dot(dir);
+          t = std::abs(nd) > 1e-9 ? -(m.normal.dot(o) + m.plane_offset) / nd : -1.0;
+          if (t <= 0.0) t = (m.point - o).dot(dir);
+        }
+      } else {
+        t = hit.t;  // same planar surface: exact depth along the pixel's ray
+      }
+      const double cos_m = std::clamp(std::abs(m.normal.dot(dir)), 1e-3, 1.0);
+      const double theta = std::acos(cos_m);
+      double z = t * dir.dot(cam_z);  // depth along the optical axis
+
+      // Rust relief (towards the camera shortens the ray), then axial noise and quantisation.
+      const double relief = geometry_.rust_relief_m(m);
+      if (relief != 0.0 && ns > 0.0) z -= ns * relief * dir.dot(cam_z) / std::max(cos_m, 0.2);
+      if (ns > 0.0) z += rng.normal() * ns * sim::axial_sigma_m(z, theta);
+      if (c.quantize_disparity) z = sim::quantize_depth_m(z, K.fx, c.baseline_m, c.subpixel_steps);
+      if (z < c.min_depth_m || z > c.max_depth_m) continue;
+
+      // Dropouts: grazing incidence, rust, isolated speckles.
+      if (ds > 0.0) {
+        const double pg = std::min(1.0, ds * sim::grazing_dropout_probability(
+                                                 theta, c.grazing_dropout_start_deg,
+                                                 c.grazing_dropout_full_deg));
+        const double keep = (1.0 - pg) * (1.0 - p_speckle) * (rust ? 1.0 - p_rust : 1.0);
+        if (rng.uniform() >= keep) continue;
+      }
+      out.frame.depth[idx] = static_cast<float>(std::min(65535L, std::lround(z * 1000.0)));
+    }
+  }
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,58 @@
+#pragma once
+// TunnelSimulator: renders depth (16-bit mm), registered RGB and a ground-truth surface-id
+// image of a simulated steel tunnel as seen by a PrimeSense-class VGA depth camera.
+// render(i) is deterministic for (config, i): all randomness comes from std::mt19937 streams
+// seeded from config.seed, the frame index and the image row.
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/frame/depth_frame.h"
+#include "core/sim/sim_config.h"
+#include "core/sim/tunnel_geometry.h"
+
+namespace tunnelmap {
+
+struct SimFrame {
+  DepthFrame frame;                       // depth in mm (depth_units_per_m = 1000), rgb, pose
+  std::vector<std::uint16_t> surface_id;  // width*height; true surface even where dropped out
+  int pose_group = 0;
+  std::optional<double> distance_to_manhole_m;
+};
+
+class TunnelSimulator {
+ public:
+  // Validates the config (throws ParameterError).
+  explicit TunnelSimulator(SimConfig config);
+
+  int frame_count() const { return config_.frames; }
+  SimFrame render(int index) const;
+  Eigen::Isometry3d pose(int index) const;  // camera-to-world, with the frame's jitter
+  const std::vector<SimSurface>& surfaces() const { return geometry_.surfaces(); }
+  const SimSurface* surface(int id) const;  // nullptr for 0, rivets and unknown ids
+
+  const SimConfig& config() const { return config_; }
+  int group_count() const { return groups_; }
+  int pose_group(int index) const;          // contiguous blocks of frames
+  std::optional<double> distance_to_manhole(int index) const;
+  std::optional<double> manhole_x() const { return manhole_x_; }  // world X of the plate
+  const sim::TunnelGeometry& geometry() const { return geometry_; }
+
+  // Neutral orientation: camera z -> world +X, camera x -> world -Y, camera y -> world -Z,
+  // then turned by yaw (about world Z), pitch (nose up) and roll (about the viewing axis).
+  static Eigen::Matrix3d camera_rotation(double roll_deg, double pitch_deg, double yaw_deg);
+
+ private:
+  static std::optional<double> compute_manhole_x(const SimConfig& c);
+  static std::optional<double> compute_end_x(const SimConfig& c);
+  void render_rows(int index, const Eigen::Isometry3d& T, int row_begin, int row_step,
+                   SimFrame& out) const;
+
+  SimConfig config_;
+  std::optional<double> manhole_x_;
+  sim::TunnelGeometry geometry_;
+  int groups_ = 1;
+};
+
+}  // namespace tunnelmap
