@@ -19,6 +19,7 @@ struct SimulateOptions {
   std::optional<double> roll, pitch, yaw;
   std::optional<int> frames;
   std::optional<long long> seed;
+  std::string rgb_format = "png";
   bool quiet = false;
 };
 
@@ -48,6 +49,7 @@ void run(const SimulateOptions& o, CliContext& ctx) {
   if (o.frames) c.frames = *o.frames;
   if (o.distance) c.distance_to_manhole_m = *o.distance;
   if (o.seed) c.seed = static_cast<unsigned>(*o.seed);
+  c.rgb_format = o.rgb_format;
   if (o.noise_scale) c.noise_scale = *o.noise_scale;
   if (o.dropout_scale) c.dropout_scale = *o.dropout_scale;
   if (o.roll) c.roll_deg = *o.roll;
@@ -85,6 +87,8 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
   sub->add_option("--roll", opt->roll, "Extra camera roll for every pose (degrees)");
   sub->add_option("--pitch", opt->pitch, "Extra camera pitch for every pose (degrees)");
   sub->add_option("--yaw", opt->yaw, "Extra camera yaw for every pose (degrees)");
+  sub->add_option("--rgb-format", opt->rgb_format, "Colour images as png (lossless) or jpg (small)")
+      ->check(CLI::IsMember({"png", "jpg"}));
   sub->add_flag("--quiet", opt->quiet, "Print only the summary line");
   sub->callback([opt, &ctx] { run(*opt, ctx); });
 }

@@ -108,7 +108,15 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
   thread_local std::vector<std::uint8_t> edges, near_edge;
   channels.assign(n * 4, 0.0f);
   edges.assign(n, 0);
-  const float jump = static_cast<float>(options.max_depth_change);
+  // Depth discontinuities from the second difference of inverse depth along rows and columns:
+  // inverse depth is linear in the pixel coordinates on ANY plane, so tilted walls seen at
+  // grazing angles do not count as edges (a first difference of depth would), while real jumps
+  // (plate borders, the manhole opening) do.
+  const float limit = static_cast<float>(options.max_depth_change);
+  auto inv = [&](std::size_t i) {
+    const float z = cloud.points[i].z();
+    return z == z ? 1.0f / z : 0.0f;  // 0 = no measurement
+  };
   for (int v = 0; v < h; ++v) {
     for (int u = 0; u < w; ++u) {
       const std::size_t i = static_cast<std::size_t>(v) * w + u;
@@ -116,15 +124,14 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
       if (!OrganizedCloud::valid(p)) continue;
       float* c = channels.data() + i * 4;
       c[0] = p.x(), c[1] = p.y(), c[2] = p.z(), c[3] = 1.0f;
-      // A depth discontinuity: a jump to the right or lower neighbour beyond jump * depth.
-      const float limit = jump * p.z();
-      if (u + 1 < w) {
-        const float q = cloud.points[i + 1].z();
-        if (q == q && std::abs(q - p.z()) > limit) edges[i] = 1;
+      const float d = 1.0f / p.z();
+      if (u > 0 && u + 1 < w) {
+        const float a = inv(i - 1), b = inv(i + 1);
+        if (a > 0 && b > 0 && std::abs(a - 2 * d + b) > limit * d) edges[i] = 1;
       }
-      if (v + 1 < h) {
-        const float q = cloud.points[i + w].z();
-        if (q == q && std::abs(q - p.z()) > limit) edges[i] = 1;
+      if (v > 0 && v + 1 < h) {
+        const float a = inv(i - w), b = inv(i + w);
+        if (a > 0 && b > 0 && std::abs(a - 2 * d + b) > limit * d) edges[i] = 1;
       }
     }
   }

@@ -9,7 +9,12 @@ namespace tunnelmap {
 namespace {
 nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-double round_to(double v, double unit) { return std::round(v / unit) * unit; }
+// Rounds to `unit` (a power of ten below 1) so that the JSON shows short numbers: dividing by
+// the exact integer scale gives the double nearest the decimal, which prints shortest.
+double round_to(double v, double unit) {
+  const double scale = std::round(1.0 / unit);
+  return std::round(v * scale) / scale;
+}
 
 nlohmann::json timings_json(const StageTimings& t) {
   nlohmann::json j = nlohmann::json::object();
@@ -53,7 +58,10 @@ nlohmann::json detection_frame_json(std::size_t index, const std::string& source
     nlohmann::json wj;
     wj["normal"] = vec(w.normal);
     wj["offset_m"] = round_to(w.offset_m, 1e-6);
-    wj["zones"] = w.clusters.size();
+    nlohmann::json clusters = nlohmann::json::array();
+    for (const ZoneCluster& c : w.clusters)
+      clusters.push_back({{"offset_m", round_to(c.offset_m, 1e-6)}, {"planes", c.planes}, {"points", c.points}});
+    wj["zone_clusters"] = clusters;
     walls[wall_class_name(static_cast<WallClass>(c))] = wj;
   }
   j["walls"] = walls;

@@ -38,7 +38,7 @@ SimConfig SimConfig::from_preset(const std::string& name) {
     c.rust_dropout = 0.25;
     c.speckle_dropout = 0.01;
     c.poses = {
-        {0.0, 0.85, 0.0, -15.0, 0.0},    // hanging from the roof, pitched down
+        {0.0, 0.75, 0.0, -6.0, 0.0},     // hanging from the roof, pitched down
         {0.27, 0.50, 0.0, -3.0, -10.0},  // near the left wall, turned away from it
         {-0.18, 0.35, 10.0, 5.0, 8.0},   // low on the right, rolled and yawed
     };
@@ -102,6 +102,8 @@ void SimConfig::validate() const {
   check_range("rust_roughness_m", rust_roughness_m, 0.0, 0.02);
   check_range("rust_dropout", rust_dropout, 0.0, 1.0);
   check_range("speckle_dropout", speckle_dropout, 0.0, 1.0);
+  if (rgb_format != "png" && rgb_format != "jpg")
+    throw ParameterError("simulator: rgb_format must be png or jpg, got '" + rgb_format + "'");
   check_range("baseline_m", baseline_m, 0.01, 1.0);
   check_range("subpixel_steps", subpixel_steps, 1, 64);
   check_range("max_depth_m", max_depth_m, 0.5, 65.0);  // 16-bit millimetres

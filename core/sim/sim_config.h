@@ -60,6 +60,7 @@ struct SimConfig {
   double rust_roughness_m = 0.001;  // amplitude of the surface relief on rust
   double rust_dropout = 0.25;       // extra dropout probability on rust
   double speckle_dropout = 0.01;    // random isolated dropouts everywhere
+  std::string rgb_format = "png";   // colour image files: "png" (lossless) or "jpg" (small)
 
   // Sensor (structured light, PrimeSense / Structure Sensor class).
   double baseline_m = 0.075;

@@ -36,6 +36,7 @@ json sim_config_to_json(const SimConfig& c) {
   j["rust_roughness_m"] = c.rust_roughness_m;
   j["rust_dropout"] = c.rust_dropout;
   j["speckle_dropout"] = c.speckle_dropout;
+  j["rgb_format"] = c.rgb_format;
   j["baseline_m"] = c.baseline_m;
   j["subpixel_steps"] = c.subpixel_steps;
   j["quantize_disparity"] = c.quantize_disparity;
@@ -103,6 +104,7 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "rust_patches_per_wall", c.rust_patches_per_wall);
     read(j, "rust_roughness_m", c.rust_roughness_m);
     read(j, "rust_dropout", c.rust_dropout);
+    if (j.contains("rgb_format") && j["rgb_format"].is_string()) c.rgb_format = j["rgb_format"].get<std::string>();
     read(j, "speckle_dropout", c.speckle_dropout);
     read(j, "baseline_m", c.baseline_m);
     read(j, "subpixel_steps", c.subpixel_steps);

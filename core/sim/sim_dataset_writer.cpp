@@ -50,9 +50,9 @@ void make_dir(const fs::path& dir) {
     throw InputError(dir.string(), "cannot create folder: " + (ec ? ec.message() : "not a folder"));
 }
 
-void write_png(const std::string& path, const cv::Mat& image) {
+void write_image(const std::string& path, const cv::Mat& image) {
   write_path_atomically(path, [&](const std::string& tmp) {
-    if (!cv::imwrite(tmp, image)) throw InputError(path, "cannot write PNG");
+    if (!cv::imwrite(tmp, image)) throw InputError(path, "cannot write the image");
   });
 }
 
@@ -102,12 +102,13 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
         bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(rgb[2], rgb[1], rgb[0]);  // OpenCV writes BGR
       }
     const std::string name = frame_name(i);
-    write_png((root / "depth" / name).string(), depth);
-    write_png((root / "rgb" / name).string(), bgr);
-    write_png((root / "gt" / name).string(), gt);
+    write_image((root / "depth" / name).string(), depth);
+    const std::string rgb_name = name.substr(0, name.rfind('.')) + "." + config.rgb_format;
+    write_image((root / "rgb" / rgb_name).string(), bgr);
+    write_image((root / "gt" / name).string(), gt);
 
     json fj = {{"depth", "depth/" + name},
-               {"rgb", "rgb/" + name},
+               {"rgb", "rgb/" + rgb_name},
                {"gt_surfaces", "gt/" + name},
                {"pose", pose_json(*f.frame.pose)},
                {"timestamp", f.frame.timestamp_s},

@@ -1,0 +1,116 @@
+// End-to-end accuracy on simulated sequences: simulator -> pipeline -> tunnel map, with the
+// lab and field presets, against the simulator's ground truth (the paper's Table 1 setting).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/pipeline/pipeline.h"
+#include "core/report/results_json.h"
+#include "core/sim/tunnel_simulator.h"
+#include "tests/support/synthetic_scene.h"
+
+using namespace tunnelmap;
+
+namespace {
+
+struct SequenceScore {
+  int frames = 0, detected = 0;
+  double width_err_mm = 0, height_err_mm = 0;  // mean absolute error
+  double width_std_mm = 0, height_std_mm = 0;
+};
+
+SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames) {
+  SimConfig config = SimConfig::from_preset(preset);
+  config.seed = seed;
+  config.frames = frames;
+  const TunnelSimulator sim(config);
+  Parameters params;
+  params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
+  Pipeline pipeline(params);
+  pipeline.set_world_up(Eigen::Vector3d::UnitZ());
+  TunnelContext context;
+  DetectionSummary summary;
+  summary.gt_width_m = config.width_m;
+  summary.gt_height_m = config.height_m;
+  FrameResult result;
+  for (int i = 0; i < sim.frame_count(); ++i) {
+    pipeline.run(sim.render(i).frame, result, &context);
+    EXPECT_TRUE(result.map.detected) << preset << " frame " << i << ": " << result.map.status << " "
+                                     << result.map.reason;
+    summary.add(result);
+  }
+  summary.finish();
+  SequenceScore s;
+  s.frames = summary.frames;
+  s.detected = summary.detected;
+  s.width_err_mm = summary.width_abs_error_mean_m * 1000;
+  s.height_err_mm = summary.height_abs_error_mean_m * 1000;
+  s.width_std_mm = summary.width_std_m * 1000;
+  s.height_std_mm = summary.height_std_m * 1000;
+  std::printf("%s seed %u: %d/%d detected, |error| w %.2f h %.2f mm, sigma w %.2f h %.2f mm\n",
+              preset.c_str(), seed, s.detected, s.frames, s.width_err_mm, s.height_err_mm,
+              s.width_std_mm, s.height_std_mm);
+  return s;
+}
+
+}  // namespace
+
+TEST(Integration, LabSequenceMeetsThePapersLabAccuracy) {
+  const SequenceScore s = run_sequence("lab", 11, 30);  // 3 poses x 10 frames, 0.82 x 1.30 m
+  EXPECT_EQ(s.detected, s.frames);
+  EXPECT_LE(s.width_err_mm, 10.0);
+  EXPECT_LE(s.height_err_mm, 10.0);
+  EXPECT_LE(s.width_std_mm, 4.0);
+  EXPECT_LE(s.height_std_mm, 4.0);
+}
+
+TEST(Integration, FieldSequenceMeetsThePapersLabAccuracy) {
+  const SequenceScore s = run_sequence("field", 12, 30);  // 5 m, 3 m, 1.8 m from the manhole
+  EXPECT_EQ(s.detected, s.frames);
+  EXPECT_LE(s.width_err_mm, 10.0);
+  EXPECT_LE(s.height_err_mm, 10.0);
+  EXPECT_LE(s.width_std_mm, 4.0);
+  EXPECT_LE(s.height_std_mm, 4.0);
+}
+
+TEST(Integration, OneFlatWallIsNoTunnel) {
+  // The camera faces a single large wall 1.5 m away: plenty of planes, but not a tunnel.
+  const std::vector<test::AnalyticPlane> wall = {{Eigen::Vector3d(-1, 0, 0), 1.5}};
+  const auto pose = test::look_at({0, 0, 0}, {1, 0.2, -0.1});
+  const auto s = test::render_planes(wall, pose, Eigen::Vector3d::Constant(-10), Eigen::Vector3d::Constant(10), 0.002);
+  Pipeline pipeline;
+  const FrameResult r = pipeline.run(s.frame);
+  EXPECT_GE(r.planes.planes.size(), 1u);
+  EXPECT_FALSE(r.map.detected);
+  EXPECT_NE(r.map.status, "ok");
+}
+
+TEST(Integration, EveryStageReportsItsTime) {
+  SimConfig config = SimConfig::from_preset("lab");
+  config.frames = 1;
+  const DepthFrame frame = TunnelSimulator(config).render(0).frame;
+  const FrameResult r = Pipeline().run(frame);
+  for (const char* stage : {"cloud", "normals", "planes", "tunnel", "total"}) {
+    ASSERT_TRUE(r.timings_ms.count(stage)) << stage;
+    EXPECT_GE(r.timings_ms.at(stage), 0.0) << stage;
+  }
+  EXPECT_GE(r.timings_ms.at("total"), r.timings_ms.at("normals") + r.timings_ms.at("planes"));
+}
+
+TEST(Integration, RerunFromALaterStageMatchesAFullRun) {
+  SimConfig config = SimConfig::from_preset("lab");
+  config.frames = 1;
+  const DepthFrame frame = TunnelSimulator(config).render(0).frame;
+  Parameters p;
+  Pipeline pipeline(p);
+  FrameResult partial;
+  pipeline.run(frame, partial);
+  p.set("grow.angle_deg", 6.0);
+  pipeline.set_params(p);
+  pipeline.run(frame, partial, nullptr, Stage::Planes);  // reuses cloud and normals
+  const FrameResult full = pipeline.run(frame);
+  ASSERT_EQ(partial.planes.planes.size(), full.planes.planes.size());
+  EXPECT_EQ(partial.planes.labels, full.planes.labels);
+  EXPECT_EQ(partial.map.detected, full.map.detected);
+  EXPECT_DOUBLE_EQ(partial.map.width_m, full.map.width_m);
+}
