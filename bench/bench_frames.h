@@ -12,6 +12,9 @@ struct NamedFrame {
   std::string name;
   DepthFrame frame;
   bool is_tunnel;  // a rectangular tunnel the detector should find
+  // Simulated frames only: per-pixel true surface normal in the camera frame (NaN where the
+  // pixel sees no planar surface), for normal-quality counters.
+  std::vector<Eigen::Vector3f> true_normals;
 };
 
 const std::vector<NamedFrame>& bench_frames();

@@ -34,6 +34,8 @@ void print_frame_line(std::size_t index, const std::string& what, const FrameRes
 
 int run_detect(const DetectOptions& o) {
   Pipeline pipeline = o.in.pipeline();  // parameter errors before any reading
+  for (const std::string& out : {o.json_path, o.ply_path})
+    if (!out.empty()) check_output_path(out);
   auto source = open_input(o.in.input, o.in.read_options());
   DetectionSummary summary;
   if (const Dataset* ds = source->dataset()) {

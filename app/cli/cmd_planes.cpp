@@ -54,6 +54,8 @@ int run_planes(const PlanesOptions& o) {
   if (!o.labels_path.empty() && std::filesystem::path(o.labels_path).extension() != ".png")
     throw ParameterError("--labels must name a .png file");
   const Parameters params = o.in.parameters();
+  for (const std::string& out : {o.json_path, o.labels_path})
+    if (!out.empty()) check_output_path(out);
   auto source = open_input(o.in.input, o.in.read_options());
   nlohmann::json frames = nlohmann::json::array();
   Progress progress(source->size());

@@ -15,4 +15,7 @@ void add_planes_command(CLI::App& app, CliContext& ctx);
 void add_params_command(CLI::App& app, CliContext& ctx);
 void add_simulate_command(CLI::App& app, CliContext& ctx);
 
+// `render` is handed to the tunnelmap-render executable before CLI11 parses (see cmd_render.cpp).
+int run_render_verb(int argc, char** argv);
+
 }  // namespace tunnelmap::cli

@@ -1,12 +1,14 @@
 // tunnelmap-cli: headless front end of the pipeline. Exit codes: 0 ok, 2 bad usage,
 // 3 unreadable or invalid input; every error is one line on stderr naming file and problem.
 #include <iostream>
+#include <string>
 
 #include "app/cli/commands.h"
 #include "core/util/error.h"
 
 int main(int argc, char** argv) {
   using namespace tunnelmap;
+  if (argc >= 2 && std::string(argv[1]) == "render") return cli::run_render_verb(argc, argv);
   CLI::App app{"TunnelMap: maps rectangular steel tunnels from depth frames (PG&C)",
                "tunnelmap-cli"};
   app.set_version_flag("--version", std::string("tunnelmap-cli ") + TUNNELMAP_VERSION);
@@ -16,6 +18,8 @@ int main(int argc, char** argv) {
   cli::add_planes_command(app, ctx);
   cli::add_params_command(app, ctx);
   cli::add_simulate_command(app, ctx);
+  app.footer("Also: tunnelmap-cli render INPUT --screenshot FILE.png [--view along|side|top] [--size WxH] [--layers ...]\n"
+             "      (headless OSMesa rendering; see tunnelmap-cli render --help)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

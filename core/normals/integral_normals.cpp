@@ -113,26 +113,29 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
   // grazing angles do not count as edges (a first difference of depth would), while real jumps
   // (plate borders, the manhole opening) do.
   const float limit = static_cast<float>(options.max_depth_change);
-  auto inv = [&](std::size_t i) {
-    const float z = cloud.points[i].z();
-    return z == z ? 1.0f / z : 0.0f;  // 0 = no measurement
-  };
-  for (int v = 0; v < h; ++v) {
-    for (int u = 0; u < w; ++u) {
-      const std::size_t i = static_cast<std::size_t>(v) * w + u;
-      const Eigen::Vector3f& p = cloud.points[i];
-      if (!OrganizedCloud::valid(p)) continue;
+  thread_local std::vector<float> inv;  // inverse depth, 0 = no measurement
+  inv.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3f& p = cloud.points[i];
+    const bool ok = OrganizedCloud::valid(p);
+    inv[i] = ok ? 1.0f / p.z() : 0.0f;
+    if (ok) {
       float* c = channels.data() + i * 4;
       c[0] = p.x(), c[1] = p.y(), c[2] = p.z(), c[3] = 1.0f;
-      const float d = 1.0f / p.z();
-      if (u > 0 && u + 1 < w) {
-        const float a = inv(i - 1), b = inv(i + 1);
-        if (a > 0 && b > 0 && std::abs(a - 2 * d + b) > limit * d) edges[i] = 1;
-      }
-      if (v > 0 && v + 1 < h) {
-        const float a = inv(i - w), b = inv(i + w);
-        if (a > 0 && b > 0 && std::abs(a - 2 * d + b) > limit * d) edges[i] = 1;
-      }
+    }
+  }
+  for (int v = 1; v + 1 < h; ++v) {
+    const float* up = inv.data() + static_cast<std::size_t>(v - 1) * w;
+    const float* mid = up + w;
+    const float* down = mid + w;
+    std::uint8_t* e = edges.data() + static_cast<std::size_t>(v) * w;
+    for (int u = 1; u + 1 < w; ++u) {
+      const float d = mid[u];
+      if (d == 0.0f) continue;
+      const float t = limit * d;
+      const bool row_edge = mid[u - 1] > 0 && mid[u + 1] > 0 && std::abs(mid[u - 1] - 2 * d + mid[u + 1]) > t;
+      const bool col_edge = up[u] > 0 && down[u] > 0 && std::abs(up[u] - 2 * d + down[u]) > t;
+      e[u] = row_edge || col_edge;
     }
   }
 

@@ -10,9 +10,9 @@ namespace tunnelmap {
 
 struct PlaneSegment {
   int id = 0;                    // 1-based; equals the value in the label image
-  Eigen::Vector3d normal;        // unit, facing the camera (camera frame)
-  Eigen::Vector3d centroid;      // mean point (metres, camera frame)
-  Eigen::Vector3d mean_normal;   // eq. 3 running mean of point normals, normalised
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();       // unit, facing the camera (camera frame)
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();     // mean point (metres, camera frame)
+  Eigen::Vector3d mean_normal = Eigen::Vector3d::Zero();  // eq. 3 running mean of point normals, normalised
   double offset_m = 0.0;         // plane: normal.dot(x) + offset_m = 0
   int points = 0;
   double area_m2 = 0.0;          // sum of the pixel footprints on the plane

@@ -7,6 +7,10 @@
 
 namespace tunnelmap {
 
+// Throws InputError naming `path` when it cannot be written (missing folder, a folder in the
+// way): called before long runs so that they fail at once, not after all the work.
+void check_output_path(const std::string& path);
+
 // Calls `write` with a binary stream on a temporary file next to `path`; on success renames it
 // over `path`. On any failure (exception from `write`, stream error, rename error) removes the
 // temporary file and throws InputError naming `path`.

@@ -1,0 +1,426 @@
+#include "ui/main_window.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <nlohmann/json.hpp>
+
+#include "core/export/map_ply.h"
+#include "core/export/planes_ply.h"
+#include "core/util/atomic_file.h"
+#include "core/util/error.h"
+#include "ui/depth_view_widget.h"
+#include "ui/parameter_panel.h"
+#include "ui/results_panel.h"
+#include "ui/timeline_widget.h"
+#include "ui/view3d_widget.h"
+
+namespace tunnelmap::ui {
+
+namespace {
+constexpr int kMaxRecent = 8;
+constexpr int kDebounceMs = 60;  // while a slider is dragged; a release runs at once
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setWindowTitle("TunnelMap");
+  setAcceptDrops(true);
+  view3d_ = new View3DWidget(this);
+  depth_view_ = new DepthViewWidget(this);
+  auto* split = new QSplitter(Qt::Horizontal, this);
+  split->addWidget(view3d_);
+  split->addWidget(depth_view_);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  setCentralWidget(split);
+
+  params_ = new ParameterPanel(this);
+  auto* params_dock = new QDockWidget(tr("Parameters"), this);
+  params_dock->setObjectName("parametersDock");
+  params_dock->setWidget(params_);
+  addDockWidget(Qt::LeftDockWidgetArea, params_dock);
+
+  auto* bottom = new QWidget(this);
+  timeline_ = new TimelineWidget(bottom);
+  results_ = new ResultsPanel(bottom);
+  auto* bottom_layout = new QVBoxLayout(bottom);
+  bottom_layout->setContentsMargins(0, 0, 0, 0);
+  bottom_layout->addWidget(timeline_);
+  bottom_layout->addWidget(results_, 1);
+  auto* results_dock = new QDockWidget(tr("Frames and results"), this);
+  results_dock->setObjectName("resultsDock");
+  results_dock->setWidget(bottom);
+  addDockWidget(Qt::BottomDockWidgetArea, results_dock);
+
+  status_label_ = new QLabel(tr("Ready"), this);
+  progress_ = new QProgressBar(this);
+  progress_->setMaximumWidth(200);
+  progress_->hide();
+  cancel_button_ = new QPushButton(tr("Cancel"), this);
+  cancel_button_->hide();
+  statusBar()->addWidget(status_label_, 1);
+  statusBar()->addPermanentWidget(progress_);
+  statusBar()->addPermanentWidget(cancel_button_);
+  connect(cancel_button_, &QPushButton::clicked, this, &MainWindow::cancel_sequence);
+
+  debounce_.setSingleShot(true);
+  debounce_.setInterval(kDebounceMs);
+  connect(&debounce_, &QTimer::timeout, this, [this] { request_run(true); });
+  connect(params_, &ParameterPanel::parametersChanged, this, [this](bool immediate) {
+    if (immediate) request_run(true);
+    else debounce_.start();
+  });
+  connect(params_, &ParameterPanel::loadPresetRequested, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameter preset"), {}, tr("JSON (*.json)"));
+    if (!path.isEmpty()) load_preset(path);
+  });
+  connect(params_, &ParameterPanel::savePresetRequested, this, [this] {
+    const QString path = ask_save_path(tr("Save parameter preset"), tr("JSON (*.json)"), "json");
+    if (!path.isEmpty()) save_preset(path);
+  });
+  connect(&runner_, &PipelineRunner::finished, this, &MainWindow::on_run_finished);
+  connect(timeline_, &TimelineWidget::frameRequested, this, [this](int i) {
+    frame_index_ = i;
+    request_run(true);
+  });
+  connect(results_, &ResultsPanel::frameActivated, this, [this](int i) {
+    timeline_->set_frame(i);
+    frame_index_ = i;
+    request_run(true);
+  });
+  connect(depth_view_, &DepthViewWidget::hovered, this,
+          [this](const QString& t) { statusBar()->showMessage(t, 3000); });
+  build_menus();
+
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+  const QByteArray last = settings.value("params/last").toByteArray();
+  if (!last.isEmpty()) {
+    try {
+      Parameters p;
+      p.apply_json(nlohmann::json::parse(last.toStdString()), "settings");
+      params_->set_parameters(p);
+    } catch (const std::exception&) {
+      // Stale settings from another version: defaults.
+    }
+  }
+  if (geometry().width() < 400) resize(1400, 860);
+}
+
+MainWindow::~MainWindow() {
+  cancel_.store(true);
+  sequence_future_.waitForFinished();
+}
+
+void MainWindow::build_menus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open…"), this, [this] {
+    QSettings s;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open depth PNG, PCD or dataset.json"), s.value("files/lastFolder").toString(),
+        tr("Inputs (*.png *.pcd *.json);;All files (*)"));
+    if (!path.isEmpty()) open_input(path);
+  }, QKeySequence::Open);
+  file->addAction(tr("Open &folder…"), this, [this] {
+    QSettings s;
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"),
+                                                          s.value("files/lastFolder").toString());
+    if (!dir.isEmpty()) open_input(dir);
+  });
+  recent_menu_ = file->addMenu(tr("Open &recent"));
+  rebuild_recent_menu();
+  file->addSeparator();
+  file->addAction(tr("Export &map PLY…"), this, [this] {
+    const QString p = ask_save_path(tr("Export map PLY"), tr("PLY (*.ply)"), "ply");
+    if (!p.isEmpty()) export_map_ply(p);
+  })->setObjectName("exportMapPly");
+  file->addAction(tr("Export &planes PLY…"), this, [this] {
+    const QString p = ask_save_path(tr("Export planes PLY"), tr("PLY (*.ply)"), "ply");
+    if (!p.isEmpty()) export_planes_ply(p);
+  })->setObjectName("exportPlanesPly");
+  file->addAction(tr("Export results &JSON…"), this, [this] {
+    const QString p = ask_save_path(tr("Export results JSON"), tr("JSON (*.json)"), "json");
+    if (!p.isEmpty()) export_results_json(p);
+  });
+  file->addAction(tr("Export results &CSV…"), this, [this] {
+    const QString p = ask_save_path(tr("Export results CSV"), tr("CSV (*.csv)"), "csv");
+    if (!p.isEmpty()) export_results_csv(p);
+  });
+  file->addAction(tr("Save &screenshot…"), this, [this] {
+    const QString p = ask_save_path(tr("Save screenshot"), tr("PNG (*.png)"), "png");
+    if (!p.isEmpty()) save_screenshot(p);
+  });
+  file->addSeparator();
+  file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  for (scene::Layer layer : scene::all_layers()) {
+    QAction* a = view->addAction(tr(scene::layer_title(layer)));
+    a->setCheckable(true);
+    a->setChecked(view3d_->scene().layer_visible(layer));
+    connect(a, &QAction::toggled, this, [this, layer](bool on) { view3d_->set_layer_visible(layer, on); });
+  }
+  view->addSeparator();
+  view->addAction(tr("Look &along the tunnel"), this, [this] { view3d_->apply_view(scene::ViewPreset::Along); }, QKeySequence("1"));
+  view->addAction(tr("From the &side"), this, [this] { view3d_->apply_view(scene::ViewPreset::Side); }, QKeySequence("2"));
+  view->addAction(tr("From &above"), this, [this] { view3d_->apply_view(scene::ViewPreset::Top); }, QKeySequence("3"));
+  view->addAction(tr("&Reset camera"), this, [this] { view3d_->apply_view(scene::ViewPreset::Reset); }, QKeySequence("0"));
+}
+
+QString MainWindow::ask_save_path(const QString& title, const QString& filter, const QString& suffix) {
+  QSettings s;
+  QString path = QFileDialog::getSaveFileName(this, title, s.value("files/lastFolder").toString(), filter);
+  if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += "." + suffix;
+  return path;
+}
+
+void MainWindow::show_error(const QString& message) {
+  last_error_ = message;
+  status_label_->setText(message);
+  emit errorShown(message);
+  if (suppress_dialogs) return;
+  auto* box = new QMessageBox(QMessageBox::Warning, tr("TunnelMap"), message, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setModal(false);  // never blocks the event loop (tests, running pipeline)
+  box->show();
+}
+
+bool MainWindow::open_input(const QString& path) {
+  std::shared_ptr<const FrameSource> source;
+  try {
+    source = tunnelmap::open_input(path.toStdString(), ReadOptions());
+    if (source->size() == 0) throw InputError(path.toStdString(), "contains no frames");
+    source->load(0);  // validate now: a bad file must not replace the current input
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  cancel_.store(true);
+  source_ = source;
+  input_path_ = path;
+  frame_index_ = 0;
+  reset_camera_ = true;
+  runner_.set_source(source_);
+  results_->clear();
+  timeline_->set_frame_count(static_cast<int>(source_->size()));
+  setWindowTitle(tr("TunnelMap — %1").arg(QFileInfo(path).fileName()));
+  add_recent(path);
+  QSettings().setValue("files/lastFolder", QFileInfo(path).absolutePath());
+  status_label_->setText(tr("Opened %1 (%2 frame(s))").arg(path).arg(source_->size()));
+  request_run(true);
+  return true;
+}
+
+void MainWindow::request_run(bool immediate) {
+  if (!source_) return;
+  if (!immediate) return debounce_.start();
+  debounce_.stop();
+  runner_.request(frame_index_, params_->parameters());
+}
+
+void MainWindow::on_run_finished(const RunOutcome& outcome) {
+  last_ = outcome;
+  if (!outcome.processed) {
+    show_error(outcome.error);
+    return;
+  }
+  current_ = outcome.processed;
+  // Cloud colours only change when the cloud stage re-ran (or another frame is shown).
+  const bool same_cloud = !reset_camera_ && outcome.from > Stage::Normals;
+  view3d_->show_frame(*current_, reset_camera_, !same_cloud);
+  reset_camera_ = false;
+  depth_view_->show_frame(current_);
+  results_->set_record(FrameRecord::from(outcome.frame_index, current_->result));
+  const auto& r = current_->result;
+  auto total = r.timings_ms.find("total");
+  status_label_->setText(
+      tr("Frame %1/%2 — %3, %4 planes — pipeline %5 ms (from %6), update %7 ms")
+          .arg(outcome.frame_index + 1)
+          .arg(source_ ? source_->size() : 0)
+          .arg(r.map.detected ? tr("width %1 m, height %2 m").arg(r.map.width_m, 0, 'f', 3).arg(r.map.height_m, 0, 'f', 3)
+                              : QString::fromStdString(r.map.status))
+          .arg(r.planes.planes.size())
+          .arg(total == r.timings_ms.end() ? 0.0 : total->second, 0, 'f', 1)
+          .arg(stage_name(outcome.from))
+          .arg(outcome.wall_ms, 0, 'f', 1));
+  ++shown_runs_;
+  emit frameShown();
+}
+
+bool MainWindow::load_preset(const QString& path) {
+  try {
+    Parameters p = params_->parameters();
+    p.load_json_file(path.toStdString());
+    params_->set_parameters(p);
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::save_preset(const QString& path) {
+  try {
+    params_->parameters().save_json_file(path.toStdString(), QFileInfo(path).baseName().toStdString());
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::export_map_ply(const QString& path) {
+  if (!current_) return show_error(tr("%1: nothing to export (open an input first)").arg(path)), false;
+  try {
+    const Eigen::Isometry3d to_world = current_->frame.pose ? *current_->frame.pose : Eigen::Isometry3d::Identity();
+    write_map_ply(path.toStdString(), current_->result.map, params_->parameters().to_json(), to_world);
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  status_label_->setText(tr("Wrote %1").arg(path));
+  return true;
+}
+
+bool MainWindow::export_planes_ply(const QString& path) {
+  if (!current_) return show_error(tr("%1: nothing to export (open an input first)").arg(path)), false;
+  try {
+    write_planes_ply(path.toStdString(), current_->result.cloud, current_->result.planes,
+                     current_->result.map.plane_classes);
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  status_label_->setText(tr("Wrote %1").arg(path));
+  return true;
+}
+
+bool MainWindow::export_results_json(const QString& path) {
+  try {
+    write_results_json(path.toStdString(), input_path_.toStdString(), results_->records(),
+                       params_->parameters().to_json());
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::export_results_csv(const QString& path) {
+  try {
+    write_results_csv(path.toStdString(), results_->records());
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::save_screenshot(const QString& path) {
+  const QImage image = grab().toImage();
+  try {
+    write_path_atomically(path.toStdString(), [&](const std::string& tmp) {
+      if (!image.save(QString::fromStdString(tmp), "PNG"))
+        throw InputError(path.toStdString(), "cannot write PNG");
+    });
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  return true;
+}
+
+void MainWindow::process_sequence() {
+  if (!source_ || sequence_running_) return;
+  sequence_running_ = true;
+  cancel_.store(false);
+  const int n = static_cast<int>(source_->size());
+  progress_->setRange(0, n);
+  progress_->setValue(0);
+  progress_->show();
+  cancel_button_->show();
+  auto source = source_;
+  const Parameters params = params_->parameters();
+  sequence_future_ = QtConcurrent::run([this, source, params, n] {
+    const Pipeline pipeline = scene::make_pipeline(*source, params);
+    TunnelContext context;
+    for (int i = 0; i < n && !cancel_.load(); ++i) {
+      FrameRecord rec;
+      QString error;
+      try {
+        const auto pf = scene::process_frame(*source, static_cast<std::size_t>(i), pipeline, &context);
+        rec = FrameRecord::from(i, pf.result);
+      } catch (const std::exception& e) {
+        rec.index = i;
+        rec.status = "error";
+        error = QString::fromStdString(e.what());
+      }
+      QMetaObject::invokeMethod(this, [this, rec, error, i] {
+        results_->set_record(rec);
+        progress_->setValue(i + 1);
+        if (!error.isEmpty()) status_label_->setText(error);
+      });
+    }
+    QMetaObject::invokeMethod(this, [this] {
+      progress_->hide();
+      cancel_button_->hide();
+      sequence_running_ = false;
+      status_label_->setText(results_->summary_text());
+    });
+  });
+}
+
+void MainWindow::add_recent(const QString& path) {
+  QSettings s;
+  QStringList list = s.value("files/recent").toStringList();
+  const QString abs = QFileInfo(path).absoluteFilePath();
+  list.removeAll(abs);
+  list.prepend(abs);
+  while (list.size() > kMaxRecent) list.removeLast();
+  s.setValue("files/recent", list);
+  rebuild_recent_menu();
+}
+
+void MainWindow::rebuild_recent_menu() {
+  if (!recent_menu_) return;
+  recent_menu_->clear();
+  for (const QString& p : QSettings().value("files/recent").toStringList())
+    recent_menu_->addAction(p, this, [this, p] { open_input(p); });
+  recent_menu_->setEnabled(!recent_menu_->isEmpty());
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+  cancel_.store(true);
+  QSettings s;
+  s.setValue("window/geometry", saveGeometry());
+  s.setValue("window/state", saveState());
+  s.setValue("params/last", QByteArray::fromStdString(params_->parameters().to_json().dump()));
+  QMainWindow::closeEvent(e);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
+  if (e->mimeData()->hasUrls()) e->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* e) {
+  const auto urls = e->mimeData()->urls();
+  if (!urls.isEmpty() && urls.first().isLocalFile()) open_input(urls.first().toLocalFile());
+}
+
+}  // namespace tunnelmap::ui

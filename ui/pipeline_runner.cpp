@@ -1,0 +1,100 @@
+#include "ui/pipeline_runner.h"
+
+#include <QElapsedTimer>
+#include <QtConcurrent/QtConcurrentRun>
+#include <chrono>
+
+namespace tunnelmap::ui {
+
+namespace {
+qint64 now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+}  // namespace
+
+std::optional<Stage> first_changed_stage(const Parameters& a, const Parameters& b) {
+  std::optional<Stage> first;
+  for (const auto& spec : parameter_table())
+    if (a.get(spec.key) != b.get(spec.key))
+      if (!first || static_cast<int>(spec.stage) < static_cast<int>(*first)) first = spec.stage;
+  return first;
+}
+
+PipelineRunner::PipelineRunner(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<RunOutcome>();
+  connect(&watcher_, &QFutureWatcher<RunOutcome>::finished, this, &PipelineRunner::on_done);
+}
+
+PipelineRunner::~PipelineRunner() { watcher_.waitForFinished(); }
+
+void PipelineRunner::set_source(std::shared_ptr<const FrameSource> source) {
+  source_ = std::move(source);
+  cache_.reset();
+  cache_frame_ = -1;
+  pending_.reset();
+}
+
+void PipelineRunner::request(int frame_index, const Parameters& params) {
+  Job job{frame_index, params, now_ns()};
+  if (running_)
+    pending_ = job;  // replaces an older pending request: only the newest counts
+  else
+    start(job);
+}
+
+void PipelineRunner::start(const Job& job) {
+  running_ = true;
+  ++runs_started_;
+  auto source = source_;
+  // Reuse the earlier stages when the frame is the same.
+  std::shared_ptr<const scene::ProcessedFrame> base;
+  Stage from = Stage::Cloud;
+  if (cache_ && cache_frame_ == job.frame_index) {
+    const auto changed = first_changed_stage(cache_params_, job.params);
+    base = cache_;
+    from = changed ? *changed : Stage::Tunnel;
+  }
+  watcher_.setFuture(QtConcurrent::run([source, base, from, job]() {
+    RunOutcome out;
+    out.frame_index = job.frame_index;
+    out.params = job.params;
+    out.from = from;
+    try {
+      if (!source) throw std::runtime_error("no input open");
+      const Pipeline pipeline = scene::make_pipeline(*source, job.params);
+      auto processed = std::make_shared<scene::ProcessedFrame>();
+      if (base) {
+        *processed = *base;  // copy: the GUI may still be showing `base`
+        pipeline.run(processed->frame, processed->result, nullptr, from);
+      } else {
+        *processed = scene::process_frame(*source, static_cast<std::size_t>(job.frame_index), pipeline);
+      }
+      out.processed = processed;
+    } catch (const std::exception& e) {
+      out.error = QString::fromStdString(e.what());
+    }
+    out.wall_ms = (now_ns() - job.requested_ns) / 1e6;
+    return out;
+  }));
+}
+
+void PipelineRunner::on_done() {
+  running_ = false;
+  RunOutcome out = watcher_.result();
+  if (out.processed) {
+    cache_ = out.processed;
+    cache_params_ = out.params;
+    cache_frame_ = out.frame_index;
+  }
+  if (pending_) {  // a newer request arrived: this result is stale
+    Job next = *pending_;
+    pending_.reset();
+    start(next);
+    return;
+  }
+  emit finished(out);
+}
+
+}  // namespace tunnelmap::ui

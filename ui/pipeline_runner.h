@@ -1,0 +1,64 @@
+#pragma once
+// PipelineRunner: runs the pipeline off the GUI thread. Requests are debounced by the caller;
+// here only the newest request matters: while one run is in flight, newer requests replace the
+// pending one and the in-flight result is dropped as stale (Pipeline::run has no cancellation
+// point, so a stale run finishes but is never shown). A parameter change re-runs only the stages
+// from the earliest one any changed parameter affects (ParameterSpec::stage).
+#include <QFutureWatcher>
+#include <QObject>
+#include <memory>
+#include <optional>
+
+#include "core/io/frame_source.h"
+#include "ui/scene/processed_frame.h"
+
+namespace tunnelmap::ui {
+
+struct RunOutcome {
+  int frame_index = -1;
+  std::shared_ptr<const scene::ProcessedFrame> processed;  // null on error
+  Parameters params;
+  Stage from = Stage::Cloud;
+  double wall_ms = 0.0;  // request to result, including queueing
+  QString error;
+};
+
+class PipelineRunner : public QObject {
+  Q_OBJECT
+ public:
+  explicit PipelineRunner(QObject* parent = nullptr);
+  ~PipelineRunner() override;
+
+  void set_source(std::shared_ptr<const FrameSource> source);  // drops cached results
+  void request(int frame_index, const Parameters& params);
+  bool busy() const { return running_; }
+  int runs_started() const { return runs_started_; }
+
+ signals:
+  void finished(const tunnelmap::ui::RunOutcome& outcome);
+
+ private:
+  struct Job {
+    int frame_index;
+    Parameters params;
+    qint64 requested_ns;
+  };
+  void start(const Job& job);
+  void on_done();
+
+  std::shared_ptr<const FrameSource> source_;
+  std::shared_ptr<const scene::ProcessedFrame> cache_;  // last completed run
+  Parameters cache_params_;
+  int cache_frame_ = -1;
+  std::optional<Job> pending_;
+  bool running_ = false;
+  int runs_started_ = 0;
+  QFutureWatcher<RunOutcome> watcher_;
+};
+
+// The earliest stage affected by any parameter that differs between `a` and `b`; nullopt if equal.
+std::optional<Stage> first_changed_stage(const Parameters& a, const Parameters& b);
+
+}  // namespace tunnelmap::ui
+
+Q_DECLARE_METATYPE(tunnelmap::ui::RunOutcome)

@@ -1,0 +1,28 @@
+#pragma once
+// The 3D view: VTK's Qt widget showing the shared TunnelScene (ui/scene), with layer toggles and
+// camera presets driven from the main window's View menu.
+#include <QVTKOpenGLNativeWidget.h>
+
+#include "ui/scene/processed_frame.h"
+#include "ui/scene/tunnel_scene.h"
+
+namespace tunnelmap::ui {
+
+class View3DWidget : public QVTKOpenGLNativeWidget {
+  Q_OBJECT
+ public:
+  explicit View3DWidget(QWidget* parent = nullptr);
+
+  scene::TunnelScene& scene() { return scene_; }
+  // Rebuilds the scene; resets the camera on the first frame of an input only.
+  // `rebuild_cloud` false keeps the point-cloud layer (only later stages changed).
+  void show_frame(const scene::ProcessedFrame& processed, bool reset_camera, bool rebuild_cloud = true);
+  void clear();
+  void set_layer_visible(scene::Layer layer, bool visible);
+  void apply_view(scene::ViewPreset view);
+
+ private:
+  scene::TunnelScene scene_;
+};
+
+}  // namespace tunnelmap::ui
