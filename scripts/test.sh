@@ -13,4 +13,9 @@ if command -v xvfb-run >/dev/null 2>&1 && [ -z "${DISPLAY:-}" ]; then
 else
   ctest --output-on-failure -j 2
 fi
+# The Debian package is built, installed, used and removed in CI (it needs root and changes
+# the system, so a developer opts in with TUNNELMAP_PACKAGE_TEST=1).
+if [ "${CI:-}" = "true" ] || [ "${TUNNELMAP_PACKAGE_TEST:-}" = "1" ]; then
+  if [ "$(id -u)" -eq 0 ]; then bash ../scripts/package-test.sh; else echo "package test skipped: needs root"; fi
+fi
 echo "test.sh: finished in $(( $(date +%s) - start )) s"

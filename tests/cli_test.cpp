@@ -179,3 +179,16 @@ TEST(Cli, AFrameWithoutATunnelStillExitsZero) {
   EXPECT_NE(j["frames"][0]["status"], "ok");
   EXPECT_TRUE(j["frames"][0]["width_m"].is_null());
 }
+
+TEST(Cli, AResultsJsonServesAsAParameterPreset) {
+  // The params a run used can be replayed: `--params results.json` reuses its "params".
+  IoTempDir tmp;
+  auto r = run_cli("detect " + kSample + " --params " + kLabPreset + " --set grow.angle_deg=5.5 -q --json " + tmp.file("a.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_cli("detect " + kSample + " -q --params " + tmp.file("a.json") + " --json " + tmp.file("b.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto a = read_json(tmp.file("a.json")), b = read_json(tmp.file("b.json"));
+  EXPECT_EQ(a["params"], b["params"]);
+  EXPECT_DOUBLE_EQ(b["params"]["grow.angle_deg"].get<double>(), 5.5);
+  EXPECT_EQ(a["summary"]["width_mean_m"], b["summary"]["width_mean_m"]);
+}

@@ -1,45 +1,47 @@
 #pragma once
-// The incremental plane model of PG&C (paper eq. 3-4): only N, the running mean point and the
-// running mean normal are needed for growing. Second moments ride along so that the final
-// least-squares normal and RMS come for free, without a second pass over the points.
+// The incremental plane model of PG&C (paper eq. 3-4). The running means p*_N and n*_N of
+// eq. 4 are kept as the sums N p*_N and N n*_N (the same numbers, one division later), so an
+// update is a few additions and the model used by the growing tests is refreshed once per
+// added point. Second moments ride along so that the least-squares normal and RMS come for
+// free, without a second pass over the region's points.
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
 
 namespace tunnelmap {
 
 class PlaneModel {
  public:
   void add(const Eigen::Vector3f& p, const Eigen::Vector3f& n) {
-    const Eigen::Vector3d pd = p.cast<double>();
+    const double x = p.x(), y = p.y(), z = p.z();
     ++count_;
-    // eq. 4: p*_{N+1} = (N p*_N + p) / (N + 1), likewise n*.
-    const double w = 1.0 / static_cast<double>(count_);
-    mean_point_ += (pd - mean_point_) * w;
-    mean_normal_ += (n.cast<double>() - mean_normal_) * w;
-    sum_pp_ += pd * pd.transpose();
-    sum_z3_ += pd.z() * pd.z() * pd.z();
-    dirty_ = true;
+    sum_p_ += Eigen::Vector3d(x, y, z);
+    sum_n_ += n.cast<double>();
+    // Upper triangle of sum p p^T: xx, xy, xz, yy, yz, zz.
+    sum_pp_[0] += x * x, sum_pp_[1] += x * y, sum_pp_[2] += x * z;
+    sum_pp_[3] += y * y, sum_pp_[4] += y * z, sum_pp_[5] += z * z;
+    sum_z3_ += z * z * z;
   }
 
   long count() const { return count_; }
-  const Eigen::Vector3d& mean_point() const { return mean_point_; }
-  const Eigen::Vector3d& mean_normal() const { return mean_normal_; }  // not normalised
+  Eigen::Vector3d mean_point() const { return sum_p_ / static_cast<double>(count_); }    // p*
+  Eigen::Vector3d mean_normal() const { return sum_n_ / static_cast<double>(count_); }   // n*, not unit
   double sum_z_cubed() const { return sum_z3_; }
 
-  // Unit mean normal and mean point as floats for the growing tests (cached until the next add).
+  // Mean point and unit mean normal as floats, for the growing tests.
   void growth_model(Eigen::Vector3f& point, Eigen::Vector3f& unit_normal) const {
-    if (dirty_) {
-      cached_point_ = mean_point_.cast<float>();
-      cached_normal_ = mean_normal_.normalized().cast<float>();
-      dirty_ = false;
-    }
-    point = cached_point_;
-    unit_normal = cached_normal_;
+    point = (sum_p_ / static_cast<double>(count_)).cast<float>();
+    unit_normal = sum_n_.normalized().cast<float>();
   }
 
   // Covariance of the points about their mean.
   Eigen::Matrix3d covariance() const {
-    return sum_pp_ / static_cast<double>(count_) - mean_point_ * mean_point_.transpose();
+    const double inv = 1.0 / static_cast<double>(count_);
+    const Eigen::Vector3d m = sum_p_ * inv;
+    Eigen::Matrix3d c;
+    c << sum_pp_[0], sum_pp_[1], sum_pp_[2], sum_pp_[1], sum_pp_[3], sum_pp_[4], sum_pp_[2], sum_pp_[4], sum_pp_[5];
+    return c * inv - m * m.transpose();
   }
 
   // Least-squares normal (smallest eigenvector of the covariance), oriented like the mean
@@ -47,19 +49,17 @@ class PlaneModel {
   Eigen::Vector3d least_squares_normal(double* rms) const {
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance());
     Eigen::Vector3d n = eig.eigenvectors().col(0);
-    if (n.dot(mean_normal_) < 0) n = -n;
+    if (n.dot(sum_n_) < 0) n = -n;
     if (rms) *rms = std::sqrt(std::max(0.0, eig.eigenvalues()(0)));
     return n;
   }
 
  private:
   long count_ = 0;
-  Eigen::Vector3d mean_point_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d mean_normal_ = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d sum_pp_ = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d sum_p_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sum_n_ = Eigen::Vector3d::Zero();
+  double sum_pp_[6] = {0, 0, 0, 0, 0, 0};
   double sum_z3_ = 0.0;
-  mutable bool dirty_ = true;
-  mutable Eigen::Vector3f cached_point_, cached_normal_;
 };
 
 }  // namespace tunnelmap

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Builds the Debian package, installs it with dpkg, runs the installed tunnelmap-cli on the
+# installed sample, and removes the package again. Needs root (CI runs it; see test.sh).
+set -euo pipefail
+cd "$(dirname "$0")/../build"
+rm -f tunnelmap_*.deb
+cpack -G DEB >/dev/null
+deb=$(ls tunnelmap_*_amd64.deb)
+echo "package-test: built $deb ($(du -h "$deb" | cut -f1))"
+dpkg-deb --field "$deb" Depends | tr ',' '\n' | sed 's/^ */  depends: /' | head -40
+dpkg -i "$deb" >/dev/null
+trap 'dpkg -r tunnelmap >/dev/null 2>&1 || true' EXIT
+out=$(mktemp -d)
+/usr/bin/tunnelmap-cli detect /usr/share/tunnelmap/sample/lab --params /usr/share/tunnelmap/presets/lab.json \
+  --json "$out/r.json" --ply "$out/map.ply"
+test -s "$out/r.json" && test -s "$out/map.ply"
+grep -q '"detected": 3' "$out/r.json"
+test -x /usr/bin/tunnelmap && test -f /usr/share/applications/tunnelmap.desktop
+test -f /usr/share/icons/hicolor/scalable/apps/tunnelmap.svg && test -f /usr/share/mime/packages/tunnelmap.xml
+if command -v man >/dev/null; then test -f /usr/share/man/man1/tunnelmap-cli.1.gz; fi
+dpkg -r tunnelmap >/dev/null
+trap - EXIT
+test ! -e /usr/bin/tunnelmap-cli
+rm -rf "$out"
+echo "package-test: installed, detected the tunnel in the installed sample, removed: ok"
