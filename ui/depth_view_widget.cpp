@@ -21,25 +21,23 @@ void DepthViewWidget::clear() {
   update();
 }
 
-void DepthViewWidget::show_frame(std::shared_ptr<const scene::ProcessedFrame> processed) {
-  frame_ = std::move(processed);
-  if (!frame_) return clear();
-  const DepthFrame& f = frame_->frame;
-  image_ = QImage(f.width, f.height, QImage::Format_RGB888);
+QImage depth_label_image(const scene::ProcessedFrame& processed) {
+  const DepthFrame& f = processed.frame;
+  QImage image(f.width, f.height, QImage::Format_RGB888);
   float lo = INFINITY, hi = -INFINITY;
   for (float d : f.depth)
     if (d > 0 && std::isfinite(d)) lo = std::min(lo, d), hi = std::max(hi, d);
   const float span = hi > lo ? hi - lo : 1.0f;
-  const PlaneSegments& planes = frame_->result.planes;
+  const PlaneSegments& planes = processed.result.planes;
   const bool labels = planes.labels.size() == f.depth.size();
   std::unordered_map<int, scene::Rgb> colour;
   for (std::size_t k = 0; k < planes.planes.size(); ++k) {
-    WallClass c = k < frame_->result.map.plane_classes.size() ? frame_->result.map.plane_classes[k]
-                                                               : WallClass::Unassigned;
+    WallClass c = k < processed.result.map.plane_classes.size() ? processed.result.map.plane_classes[k]
+                                                                 : WallClass::Unassigned;
     colour[planes.planes[k].id] = scene::wall_class_color(c);
   }
   for (int v = 0; v < f.height; ++v) {
-    uchar* line = image_.scanLine(v);
+    uchar* line = image.scanLine(v);
     for (int u = 0; u < f.width; ++u) {
       const std::size_t i = static_cast<std::size_t>(v) * f.width + u;
       const float d = f.depth[i];
@@ -53,6 +51,13 @@ void DepthViewWidget::show_frame(std::shared_ptr<const scene::ProcessedFrame> pr
       for (int k = 0; k < 3; ++k) line[u * 3 + k] = static_cast<uchar>(std::clamp(rgb[k], 0.0, 1.0) * 255);
     }
   }
+  return image;
+}
+
+void DepthViewWidget::show_frame(std::shared_ptr<const scene::ProcessedFrame> processed, QImage image) {
+  frame_ = std::move(processed);
+  if (!frame_) return clear();
+  image_ = image.isNull() ? depth_label_image(*frame_) : std::move(image);
   update();
 }
 

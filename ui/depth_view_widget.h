@@ -8,12 +8,16 @@
 
 namespace tunnelmap::ui {
 
+// The depth image with the label overlay; any thread (QImage only, no widgets).
+QImage depth_label_image(const scene::ProcessedFrame& processed);
+
 class DepthViewWidget : public QWidget {
   Q_OBJECT
  public:
   explicit DepthViewWidget(QWidget* parent = nullptr);
 
-  void show_frame(std::shared_ptr<const scene::ProcessedFrame> processed);
+  // `image` from depth_label_image() (built off the GUI thread); null: built here.
+  void show_frame(std::shared_ptr<const scene::ProcessedFrame> processed, QImage image = {});
   void clear();
   const QImage& image() const { return image_; }
   // "u 120, v 80: depth 1.234 m, plane 3 (left)" or empty outside the image.

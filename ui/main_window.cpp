@@ -4,6 +4,7 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
@@ -17,6 +18,9 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <nlohmann/json.hpp>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 
 #include "core/export/map_ply.h"
 #include "core/export/planes_ply.h"
@@ -48,6 +52,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setCentralWidget(split);
 
   params_ = new ParameterPanel(this);
+  params_->setMinimumWidth(450);  // label + slider + value + reset per row
   auto* params_dock = new QDockWidget(tr("Parameters"), this);
   params_dock->setObjectName("parametersDock");
   params_dock->setWidget(params_);
@@ -64,6 +69,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   results_dock->setObjectName("resultsDock");
   results_dock->setWidget(bottom);
   addDockWidget(Qt::BottomDockWidgetArea, results_dock);
+  // First-run layout (a saved layout replaces it): most of the height for the views.
+  resizeDocks({results_dock}, {230}, Qt::Vertical);
 
   status_label_ = new QLabel(tr("Ready"), this);
   progress_ = new QProgressBar(this);
@@ -76,6 +83,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   statusBar()->addPermanentWidget(cancel_button_);
   connect(cancel_button_, &QPushButton::clicked, this, &MainWindow::cancel_sequence);
 
+  choose_open_path = [this](const QString& title, const QString& folder, const QString& filter) {
+    return QFileDialog::getOpenFileName(this, title, folder, filter);
+  };
+  choose_save_path = [this](const QString& title, const QString& folder, const QString& filter) {
+    // Overwriting is asked by confirm_overwrite (after the suffix is added), not twice.
+    return QFileDialog::getSaveFileName(this, title, folder, filter, nullptr,
+                                        QFileDialog::DontConfirmOverwrite);
+  };
+  confirm_overwrite = [this](const QString& path) {
+    return QMessageBox::question(this, tr("Replace file?"),
+                                 tr("%1 already exists. Replace it?").arg(path),
+                                 QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
+  };
+
   debounce_.setSingleShot(true);
   debounce_.setInterval(kDebounceMs);
   connect(&debounce_, &QTimer::timeout, this, [this] { request_run(true); });
@@ -84,7 +105,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     else debounce_.start();
   });
   connect(params_, &ParameterPanel::loadPresetRequested, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load parameter preset"), {}, tr("JSON (*.json)"));
+    const QString path = ask_open_path(tr("Load parameter preset"), tr("JSON (*.json)"));
     if (!path.isEmpty()) load_preset(path);
   });
   connect(params_, &ParameterPanel::savePresetRequested, this, [this] {
@@ -129,18 +150,20 @@ MainWindow::~MainWindow() {
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open…"), this, [this] {
-    QSettings s;
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open depth PNG, PCD or dataset.json"), s.value("files/lastFolder").toString(),
-        tr("Inputs (*.png *.pcd *.json);;All files (*)"));
+    const QString path = ask_open_path(tr("Open depth PNG, PCD or dataset.json"),
+                                       tr("Inputs (*.png *.pcd *.json);;All files (*)"));
     if (!path.isEmpty()) open_input(path);
-  }, QKeySequence::Open);
+  }, QKeySequence::Open)->setObjectName("open");
   file->addAction(tr("Open &folder…"), this, [this] {
     QSettings s;
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"),
                                                           s.value("files/lastFolder").toString());
     if (!dir.isEmpty()) open_input(dir);
   });
+  file->addAction(tr("Open &mesh…"), this, [this] {
+    const QString path = ask_open_path(tr("Open mesh PLY"), tr("PLY (*.ply)"));
+    if (!path.isEmpty()) open_mesh(path);
+  })->setObjectName("openMesh");
   recent_menu_ = file->addMenu(tr("Open &recent"));
   rebuild_recent_menu();
   file->addSeparator();
@@ -155,15 +178,15 @@ void MainWindow::build_menus() {
   file->addAction(tr("Export results &JSON…"), this, [this] {
     const QString p = ask_save_path(tr("Export results JSON"), tr("JSON (*.json)"), "json");
     if (!p.isEmpty()) export_results_json(p);
-  });
+  })->setObjectName("exportResultsJson");
   file->addAction(tr("Export results &CSV…"), this, [this] {
     const QString p = ask_save_path(tr("Export results CSV"), tr("CSV (*.csv)"), "csv");
     if (!p.isEmpty()) export_results_csv(p);
-  });
+  })->setObjectName("exportResultsCsv");
   file->addAction(tr("Save &screenshot…"), this, [this] {
     const QString p = ask_save_path(tr("Save screenshot"), tr("PNG (*.png)"), "png");
     if (!p.isEmpty()) save_screenshot(p);
-  });
+  })->setObjectName("saveScreenshot");
   file->addSeparator();
   file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence);
   file->addSeparator();
@@ -184,10 +207,18 @@ void MainWindow::build_menus() {
 }
 
 QString MainWindow::ask_save_path(const QString& title, const QString& filter, const QString& suffix) {
-  QSettings s;
-  QString path = QFileDialog::getSaveFileName(this, title, s.value("files/lastFolder").toString(), filter);
-  if (!path.isEmpty() && QFileInfo(path).suffix().isEmpty()) path += "." + suffix;
+  QString path = choose_save_path(title, QSettings().value("files/lastFolder").toString(), filter);
+  if (path.isEmpty()) return path;
+  if (QFileInfo(path).suffix().isEmpty()) path += "." + suffix;
+  if (QFileInfo::exists(path) && !confirm_overwrite(path)) {
+    status_label_->setText(tr("Not written: %1 exists").arg(path));
+    return {};
+  }
   return path;
+}
+
+QString MainWindow::ask_open_path(const QString& title, const QString& filter) {
+  return choose_open_path(title, QSettings().value("files/lastFolder").toString(), filter);
 }
 
 void MainWindow::show_error(const QString& message) {
@@ -216,6 +247,7 @@ bool MainWindow::open_input(const QString& path) {
   input_path_ = path;
   frame_index_ = 0;
   reset_camera_ = true;
+  mesh_frame_ = -1;
   runner_.set_source(source_);
   results_->clear();
   timeline_->set_frame_count(static_cast<int>(source_->size()));
@@ -223,6 +255,15 @@ bool MainWindow::open_input(const QString& path) {
   add_recent(path);
   QSettings().setValue("files/lastFolder", QFileInfo(path).absolutePath());
   status_label_->setText(tr("Opened %1 (%2 frame(s))").arg(path).arg(source_->size()));
+  request_run(true);
+  return true;
+}
+
+bool MainWindow::select_frame(int index) {
+  if (!source_ || index < 0 || index >= static_cast<int>(source_->size())) return false;
+  if (index == frame_index_) return true;  // already shown or requested
+  timeline_->set_frame(index);
+  frame_index_ = index;
   request_run(true);
   return true;
 }
@@ -241,11 +282,16 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
     return;
   }
   current_ = outcome.processed;
-  // Cloud colours only change when the cloud stage re-ran (or another frame is shown).
-  const bool same_cloud = !reset_camera_ && outcome.from > Stage::Normals;
-  view3d_->show_frame(*current_, reset_camera_, !same_cloud);
+  QElapsedTimer shown;
+  shown.start();
+  if (outcome.geometry)
+    view3d_->show_geometry(*outcome.geometry, reset_camera_);
+  else
+    view3d_->show_frame(*current_, reset_camera_);
   reset_camera_ = false;
-  depth_view_->show_frame(current_);
+  depth_view_->show_frame(current_, outcome.depth_image);
+  last_show_ms_ = shown.nsecsElapsed() / 1e6;
+  if (mesh_world_ && outcome.frame_index != mesh_frame_) show_mesh();  // another frame's pose
   results_->set_record(FrameRecord::from(outcome.frame_index, current_->result));
   const auto& r = current_->result;
   auto total = r.timings_ms.find("total");
@@ -283,6 +329,55 @@ bool MainWindow::save_preset(const QString& path) {
     return false;
   }
   return true;
+}
+
+bool MainWindow::open_mesh(const QString& path) {
+  vtkSmartPointer<vtkPolyData> mesh;
+  try {
+    const std::string file = path.toStdString();
+    if (!QFileInfo(path).isFile()) throw InputError(file, "no such file");
+    if (!vtkPLYReader::CanReadFile(file.c_str())) throw InputError(file, "not a PLY file");
+    auto reader = vtkSmartPointer<vtkPLYReader>::New();
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    mesh = reader->GetOutput();
+    if (!mesh || mesh->GetNumberOfPoints() == 0) throw InputError(file, "PLY has no vertices");
+    if (mesh->GetNumberOfPolys() == 0) throw InputError(file, "PLY has no faces (not a mesh)");
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  mesh_world_ = mesh;
+  mesh_frame_ = -1;
+  show_mesh();
+  status_label_->setText(tr("Mesh %1: %2 vertices, %3 triangles")
+                             .arg(path)
+                             .arg(mesh->GetNumberOfPoints())
+                             .arg(mesh->GetNumberOfPolys()));
+  return true;
+}
+
+void MainWindow::show_mesh() {
+  if (!mesh_world_) return view3d_->set_mesh(nullptr);
+  // The scene is in the shown frame's camera frame; a posed frame maps world -> camera.
+  const bool posed = current_ && current_->frame.pose;
+  mesh_frame_ = current_ ? last_.frame_index : -1;
+  if (!posed) return view3d_->set_mesh(mesh_world_);
+  const Eigen::Isometry3d to_camera = current_->frame.pose->inverse();
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->ShallowCopy(mesh_world_);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(mesh_world_->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < mesh_world_->GetNumberOfPoints(); ++i) {
+    double p[3];
+    mesh_world_->GetPoint(i, p);
+    const Eigen::Vector3d q = to_camera * Eigen::Vector3d(p[0], p[1], p[2]);
+    points->SetPoint(i, q.data());
+  }
+  moved->SetPoints(points);
+  moved->GetPointData()->SetNormals(nullptr);  // world-frame normals would light it wrongly
+  view3d_->set_mesh(moved);
 }
 
 bool MainWindow::export_map_ply(const QString& path) {

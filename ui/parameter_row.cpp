@@ -14,7 +14,7 @@ ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   auto* label = new QLabel(QString::fromStdString(spec.label), this);
-  label->setMinimumWidth(130);
+  label->setMinimumWidth(175);  // the longest label: every slider starts at the same x
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setRange(0, to_slider(spec.max));
   slider_->setObjectName("slider");
@@ -25,8 +25,11 @@ ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget
   int decimals = 0;
   for (double s = spec.step; decimals < 6 && std::fabs(s - std::round(s)) > 1e-9; s *= 10) ++decimals;
   spin_->setDecimals(decimals);
-  if (!spec.unit.empty()) spin_->setSuffix(" " + QString::fromStdString(spec.unit));
+  QString unit = QString::fromStdString(spec.unit);
+  if (unit == "m2") unit = QStringLiteral("m²");
+  if (!unit.isEmpty()) spin_->setSuffix(" " + unit);
   spin_->setKeyboardTracking(false);
+  spin_->setFixedWidth(96);  // same width on every row: sliders and values line up
   reset_ = new QToolButton(this);
   reset_->setText(QStringLiteral("↺"));
   reset_->setToolTip(tr("Reset to default (%1)").arg(spec.default_value));

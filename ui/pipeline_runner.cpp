@@ -4,6 +4,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <chrono>
 
+#include "ui/depth_view_widget.h"
+
 namespace tunnelmap::ui {
 
 namespace {
@@ -32,6 +34,7 @@ PipelineRunner::~PipelineRunner() { watcher_.waitForFinished(); }
 void PipelineRunner::set_source(std::shared_ptr<const FrameSource> source) {
   source_ = std::move(source);
   cache_.reset();
+  cache_geometry_.reset();
   cache_frame_ = -1;
   pending_.reset();
 }
@@ -50,13 +53,16 @@ void PipelineRunner::start(const Job& job) {
   auto source = source_;
   // Reuse the earlier stages when the frame is the same.
   std::shared_ptr<const scene::ProcessedFrame> base;
+  vtkSmartPointer<vtkPolyData> base_cloud;
   Stage from = Stage::Cloud;
   if (cache_ && cache_frame_ == job.frame_index) {
     const auto changed = first_changed_stage(cache_params_, job.params);
     base = cache_;
     from = changed ? *changed : Stage::Tunnel;
+    // The cloud layer depends on the frame and the cloud stage only.
+    if (from > Stage::Normals && cache_geometry_) base_cloud = cache_geometry_->cloud;
   }
-  watcher_.setFuture(QtConcurrent::run([source, base, from, job]() {
+  watcher_.setFuture(QtConcurrent::run([source, base, base_cloud, from, job]() {
     RunOutcome out;
     out.frame_index = job.frame_index;
     out.params = job.params;
@@ -71,6 +77,15 @@ void PipelineRunner::start(const Job& job) {
       } else {
         *processed = scene::process_frame(*source, static_cast<std::size_t>(job.frame_index), pipeline);
       }
+      const qint64 scene_start = now_ns();
+      scene::GeometryOptions options;
+      options.cloud = !base_cloud;
+      auto geometry = std::make_shared<scene::SceneGeometry>(
+          scene::build_geometry(processed->scene_data(), options));
+      if (base_cloud) geometry->cloud = base_cloud;
+      out.depth_image = depth_label_image(*processed);
+      out.geometry = geometry;
+      out.scene_ms = (now_ns() - scene_start) / 1e6;
       out.processed = processed;
     } catch (const std::exception& e) {
       out.error = QString::fromStdString(e.what());
@@ -85,6 +100,7 @@ void PipelineRunner::on_done() {
   RunOutcome out = watcher_.result();
   if (out.processed) {
     cache_ = out.processed;
+    cache_geometry_ = out.geometry;
     cache_params_ = out.params;
     cache_frame_ = out.frame_index;
   }

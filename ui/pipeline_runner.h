@@ -3,23 +3,31 @@
 // here only the newest request matters: while one run is in flight, newer requests replace the
 // pending one and the in-flight result is dropped as stale (Pipeline::run has no cancellation
 // point, so a stale run finishes but is never shown). A parameter change re-runs only the stages
-// from the earliest one any changed parameter affects (ParameterSpec::stage).
+// from the earliest one any changed parameter affects (ParameterSpec::stage). The worker also
+// builds the scene geometry and the depth image; the point-cloud polydata of the previous run
+// is reused (same object, so VTK keeps its GPU buffers) when only later stages re-ran.
 #include <QFutureWatcher>
+#include <QImage>
 #include <QObject>
 #include <memory>
 #include <optional>
 
 #include "core/io/frame_source.h"
 #include "ui/scene/processed_frame.h"
+#include "ui/scene/scene_geometry.h"
 
 namespace tunnelmap::ui {
 
 struct RunOutcome {
   int frame_index = -1;
   std::shared_ptr<const scene::ProcessedFrame> processed;  // null on error
+  // What the views show, built on the worker too so the GUI thread only swaps and renders.
+  std::shared_ptr<const scene::SceneGeometry> geometry;
+  QImage depth_image;
   Parameters params;
   Stage from = Stage::Cloud;
-  double wall_ms = 0.0;  // request to result, including queueing
+  double wall_ms = 0.0;   // request to result, including queueing
+  double scene_ms = 0.0;  // of which building the scene geometry and the depth image
   QString error;
 };
 
@@ -48,6 +56,7 @@ class PipelineRunner : public QObject {
 
   std::shared_ptr<const FrameSource> source_;
   std::shared_ptr<const scene::ProcessedFrame> cache_;  // last completed run
+  std::shared_ptr<const scene::SceneGeometry> cache_geometry_;
   Parameters cache_params_;
   int cache_frame_ = -1;
   std::optional<Job> pending_;

@@ -17,11 +17,16 @@ class View3DWidget : public QVTKOpenGLNativeWidget {
   // Rebuilds the scene; resets the camera on the first frame of an input only.
   // `rebuild_cloud` false keeps the point-cloud layer (only later stages changed).
   void show_frame(const scene::ProcessedFrame& processed, bool reset_camera, bool rebuild_cloud = true);
+  // Shows geometry built off the GUI thread (PipelineRunner): only swaps inputs and renders.
+  void show_geometry(const scene::SceneGeometry& geometry, bool reset_camera);
+  void set_mesh(vtkPolyData* mesh);  // null clears the mesh layer
   void clear();
   void set_layer_visible(scene::Layer layer, bool visible);
   void apply_view(scene::ViewPreset view);
 
  private:
+  void finish_update(bool reset_camera);
+
   scene::TunnelScene scene_;
 };
 

@@ -1,15 +1,19 @@
 // `tunnelmap-cli detect INPUT`: the whole pipeline on a frame or a sequence, one line per frame
 // and a summary; optional JSON results and the tunnel map as a PLY mesh.
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
+#include "core/baselines/method_runner.h"
 #include "core/export/map_ply.h"
 #include "core/io/frame_source.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
+#include "sensors/openni/device_frame_source.h"
 
 namespace tunnelmap::cli {
 
@@ -19,6 +23,9 @@ struct DetectOptions {
   std::string json_path;
   std::string ply_path;
   bool quiet = false;
+  std::string method = "pgc";  // pgc | ransac | qhull
+  std::string device;  // live OpenNI2 device URI ("default" = the first one)
+  int frames = 30;     // frames to process from a live device
 };
 
 void print_frame_line(std::size_t index, const std::string& what, const FrameResult& r) {
@@ -36,13 +43,31 @@ int run_detect(const DetectOptions& o) {
   Pipeline pipeline = o.in.pipeline();  // parameter errors before any reading
   for (const std::string& out : {o.json_path, o.ply_path})
     if (!out.empty()) check_output_path(out);
-  auto source = open_input(o.in.input, o.in.read_options());
+  const bool live = !o.device.empty();
+  // One line each (CLI::RequiredError appends " is required" itself).
+  if (!live && o.in.input.empty()) throw CLI::RequiredError("detect: INPUT or --device URI");
+  if (live && !o.in.input.empty()) throw CLI::ValidationError("detect", "give INPUT or --device URI, not both");
+  std::unique_ptr<FrameSource> source;
+  if (live)
+    source = std::make_unique<openni2::DeviceFrameSource>(o.device, static_cast<std::size_t>(std::max(o.frames, 0)),
+                                                          o.in.read_options());
+  else
+    source = open_input(o.in.input, o.in.read_options());
+  // Live input: frame rate and latency (frame in hand -> result) as the pipeline keeps up, from
+  // the first frame on (a camera's start-up is not the pipeline's rate).
+  using clock = std::chrono::steady_clock;
+  clock::time_point first_frame, last_frame;
+  std::vector<double> latencies_ms;
   DetectionSummary summary;
   if (const Dataset* ds = source->dataset()) {
     pipeline.set_world_up(ds->up);
     summary.gt_width_m = ds->gt_width_m;
     summary.gt_height_m = ds->gt_height_m;
   }
+  // --method: PG&C or one of the paper's baselines, same inputs and outputs.
+  MethodRunner runner(parse_method(o.method), pipeline.params());
+  runner.set_camera_up(o.in.camera_up());
+  if (const Dataset* ds = source->dataset()) runner.set_world_up(ds->up);
   TunnelContext context;
   nlohmann::json frames = nlohmann::json::array();
   std::optional<TunnelMap> last_map;
@@ -51,7 +76,11 @@ int run_detect(const DetectOptions& o) {
   FrameResult result;
   for (std::size_t i = 0; i < source->size(); ++i) {
     const DepthFrame frame = source->load(i);
-    pipeline.run(frame, result, &context);
+    const auto got = clock::now();
+    if (i == 0) first_frame = got;
+    last_frame = got;
+    runner.run(frame, result, &context);
+    latencies_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - got).count());
     summary.add(result);
     frames.push_back(detection_frame_json(i, frame.source, result));
     if (result.map.detected) {
@@ -70,10 +99,18 @@ int run_detect(const DetectOptions& o) {
     std::printf(", mean abs error %.1f / %.1f mm vs ground truth", summary.width_abs_error_mean_m * 1000,
                 summary.height_abs_error_mean_m * 1000);
   std::printf(", median %.1f ms/frame\n", summary.total_ms_median);
+  if (live && !latencies_ms.empty()) {
+    const double seconds = std::chrono::duration<double>(last_frame - first_frame).count();
+    const double fps = seconds > 0 ? (latencies_ms.size() - 1) / seconds : 0.0;  // frame intervals
+    std::sort(latencies_ms.begin(), latencies_ms.end());
+    std::printf("live: %zu frames in %.2f s = %.1f fps, latency median %.1f ms, max %.1f ms\n", latencies_ms.size(),
+                seconds, fps, latencies_ms[latencies_ms.size() / 2], latencies_ms.back());
+  }
 
   const nlohmann::json params = pipeline.params().to_json();
   if (!o.json_path.empty()) {
-    const nlohmann::json doc = detection_document(params, frames, summary, o.in.input);
+    nlohmann::json doc = detection_document(params, frames, summary, live ? o.device : o.in.input);
+    doc["method"] = method_name(runner.method());
     write_file_atomically(o.json_path, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
   }
   if (!o.ply_path.empty()) {
@@ -89,12 +126,16 @@ int run_detect(const DetectOptions& o) {
 
 void add_detect_command(CLI::App& app, CliContext& ctx) {
   static DetectOptions o;
-  auto* cmd = app.add_subcommand("detect", "Detect the tunnel in a depth frame, PCD or dataset sequence");
-  add_input_options(cmd, o.in);
+  auto* cmd = app.add_subcommand("detect", "Detect the tunnel in a depth frame, PCD, dataset, .oni recording or live device");
+  add_input_options(cmd, o.in, false);
+  cmd->add_option("--device", o.device, "Live OpenNI2 device URI (see `devices`; \"default\" = the first one)");
+  cmd->add_option("--frames", o.frames, "Frames to process from --device (default 30)")->check(CLI::PositiveNumber);
   cmd->add_option("--json", o.json_path, "Write per-frame results and a summary as JSON");
   cmd->add_option("--ply", o.ply_path,
                   "Write the tunnel map (last detected frame, world frame when posed) as a binary PLY mesh");
   cmd->add_flag("--quiet,-q", o.quiet, "Only print the summary line");
+  cmd->add_option("--method", o.method, "pgc (the paper's PG&C), ransac (R&L baseline) or qhull (convex-hull baseline)")
+      ->capture_default_str();
   cmd->callback([&ctx] { ctx.exit_code = run_detect(o); });
 }
 

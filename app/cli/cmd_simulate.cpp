@@ -20,6 +20,8 @@ struct SimulateOptions {
   std::optional<int> frames;
   std::optional<long long> seed;
   std::string rgb_format = "png";
+  std::string arm;                 // robot preset: joints instead of poses
+  std::optional<double> sag;       // arm link sag, deg per metre of reach
   bool quiet = false;
 };
 
@@ -55,6 +57,9 @@ void run(const SimulateOptions& o, CliContext& ctx) {
   if (o.roll) c.roll_deg = *o.roll;
   if (o.pitch) c.pitch_deg = *o.pitch;
   if (o.yaw) c.yaw_deg = *o.yaw;
+  if (!o.arm.empty()) c.arm_preset = o.arm;
+  check("--sag", o.sag, 0.0, 10.0);
+  if (o.sag) c.arm_sag_deg_per_m = *o.sag;
   c.validate();  // combinations (e.g. manhole opening vs. a small width)
 
   write_sim_dataset(o.out_dir, c, [&](int i, int n, const std::string& depth_path) {
@@ -89,6 +94,10 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
   sub->add_option("--yaw", opt->yaw, "Extra camera yaw for every pose (degrees)");
   sub->add_option("--rgb-format", opt->rgb_format, "Colour images as png (lossless) or jpg (small)")
       ->check(CLI::IsMember({"png", "jpg"}));
+  sub->add_option("--arm", opt->arm,
+                  "Eye-in-hand arm preset (inchworm7): frames get joints, not poses")
+      ->check(CLI::IsMember({"inchworm7"}));
+  sub->add_option("--sag", opt->sag, "Arm link sag in degrees per metre of reach (with --arm)");
   sub->add_flag("--quiet", opt->quiet, "Print only the summary line");
   sub->callback([opt, &ctx] { run(*opt, ctx); });
 }

@@ -14,6 +14,10 @@ void add_detect_command(CLI::App& app, CliContext& ctx);
 void add_planes_command(CLI::App& app, CliContext& ctx);
 void add_params_command(CLI::App& app, CliContext& ctx);
 void add_simulate_command(CLI::App& app, CliContext& ctx);
+void add_fuse_command(CLI::App& app, CliContext& ctx);
+void add_evaluate_command(CLI::App& app, CliContext& ctx);
+void add_devices_command(CLI::App& app, CliContext& ctx);  // OpenNI2 (sensors/openni)
+void add_record_command(CLI::App& app, CliContext& ctx);   // OpenNI2 (sensors/openni)
 
 // `render` is handed to the tunnelmap-render executable before CLI11 parses (see cmd_render.cpp).
 int run_render_verb(int argc, char** argv);

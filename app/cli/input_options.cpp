@@ -33,8 +33,9 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
 }
 }  // namespace
 
-void add_input_options(CLI::App* cmd, InputOptions& opt) {
-  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, or dataset folder")->required();
+void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required) {
+  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, dataset folder, or OpenNI2 recording (.oni)")
+      ->required(input_required);
   cmd->add_option("--params", opt.params_file, "Parameter preset JSON (see resources/presets)");
   cmd->add_option("--set", opt.sets, "Override one parameter: KEY=VALUE (repeatable; see `params`)")
       ->take_all();

@@ -26,8 +26,9 @@ struct InputOptions {
   Pipeline pipeline() const;                         // parameters + up, world up from a dataset
 };
 
-// Registers INPUT and --params/--set/--intrinsics/--depth-scale/--up on `cmd`.
-void add_input_options(CLI::App* cmd, InputOptions& opt);
+// Registers INPUT and --params/--set/--intrinsics/--depth-scale/--up on `cmd`. INPUT is optional
+// when the command has another source (detect --device): it then checks for one itself.
+void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required = true);
 
 // Progress bar on stderr when it is a terminal (sequences only).
 class Progress {

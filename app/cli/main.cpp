@@ -5,6 +5,7 @@
 
 #include "app/cli/commands.h"
 #include "core/util/error.h"
+#include "sensors/openni/register_openni.h"
 
 int main(int argc, char** argv) {
   using namespace tunnelmap;
@@ -18,6 +19,11 @@ int main(int argc, char** argv) {
   cli::add_planes_command(app, ctx);
   cli::add_params_command(app, ctx);
   cli::add_simulate_command(app, ctx);
+  cli::add_fuse_command(app, ctx);
+  cli::add_evaluate_command(app, ctx);
+  cli::add_devices_command(app, ctx);
+  cli::add_record_command(app, ctx);
+  openni2::register_openni_inputs();  // INPUT may be an .oni recording
   app.footer("Also: tunnelmap-cli render INPUT --screenshot FILE.png [--view along|side|top] [--size WxH] [--layers ...]\n"
              "      (headless OSMesa rendering; see tunnelmap-cli render --help)");
   try {

@@ -1,5 +1,5 @@
 // tunnelmap: the inspection GUI.
-//   tunnelmap [INPUT] [--params FILE] [--screenshot FILE --exit]
+//   tunnelmap [INPUT] [--params FILE] [--frame N] [--view V] [--size WxH] [--screenshot FILE --exit]
 // With --screenshot the window is grabbed once the first frame is processed; with --exit the
 // program then quits (exit 0, or 3 when the input or the screenshot failed).
 #include <QApplication>
@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   QCommandLineOption exit_opt("exit", "Quit after --screenshot");
   QCommandLineOption size_opt("size", "Window size WIDTHxHEIGHT", "SIZE", "1400x860");
   QCommandLineOption view_opt("view", "Camera: along, side, top", "VIEW", "along");
-  cli.addOptions({params_opt, shot_opt, exit_opt, size_opt, view_opt});
+  QCommandLineOption frame_opt("frame", "Show frame N of a sequence (0 = first)", "N", "0");
+  cli.addOptions({params_opt, shot_opt, exit_opt, size_opt, view_opt, frame_opt});
   cli.process(app);
 
   tunnelmap::ui::MainWindow window;
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   if (!shot.isEmpty()) {
     static bool grabbed = false;  // only the first processed frame
     QObject::connect(&window, &tunnelmap::ui::MainWindow::frameShown, &window, [&] {
-      if (grabbed) return;
+      if (grabbed || window.last_outcome().frame_index != cli.value(frame_opt).toInt()) return;
       grabbed = true;
       try {
         window.view3d()->apply_view(tunnelmap::scene::parse_view(cli.value(view_opt).toStdString()));
@@ -69,6 +70,8 @@ int main(int argc, char** argv) {
   }
   const QStringList inputs = cli.positionalArguments();
   if (!inputs.isEmpty() && exit_code == 0 && !window.open_input(inputs.first())) fail(window.last_error());
+  if (cli.isSet(frame_opt) && exit_code == 0 && !window.select_frame(cli.value(frame_opt).toInt()))
+    fail(QString("--frame %1: the input has no such frame").arg(cli.value(frame_opt)));
   if (batch && inputs.isEmpty()) fail("--exit needs an INPUT to process");
   if (batch && shot.isEmpty() && exit_code == 0)
     QObject::connect(&window, &tunnelmap::ui::MainWindow::frameShown, &app, [&] { app.exit(0); });

@@ -28,6 +28,7 @@ int run(const render::RenderOptions& opt) {
 
   render::OsMesaWindow window(opt.width, opt.height);
   scene::TunnelScene scene;
+  scene.set_max_display_points(opt.max_points);
   scene.update(processed.scene_data());
   if (!opt.layers.empty()) scene.show_only(opt.layers);
   window.add_renderer(scene.renderer());
@@ -38,7 +39,12 @@ int run(const render::RenderOptions& opt) {
   std::cout << opt.screenshot << ": " << image.width << "x" << image.height << ", view "
             << scene::view_name(opt.view) << ", tunnel " << map.status;
   if (map.detected) std::cout << " (width " << map.width_m << " m, height " << map.height_m << " m)";
-  std::cout << ", " << processed.result.planes.planes.size() << " planes\n";
+  std::cout << ", " << processed.result.planes.planes.size() << " planes";
+  // Where the tunnel is in the image: lets tests check map colours lie inside it.
+  const scene::PixelBox box = scene.projected_boundary(image.width, image.height);
+  if (box.count > 0)
+    std::cout << ", boundary box " << box.x0 << "," << box.y0 << " " << box.x1 << "," << box.y1;
+  std::cout << "\n";
   return 0;
 }
 
@@ -59,6 +65,9 @@ int main(int argc, char** argv) {
   app.add_option("--params", opt.params_file, "Parameter preset JSON");
   app.add_option("--set", opt.sets, "Parameter KEY=VALUE (repeatable)");
   app.add_option("--frame", opt.frame, "Frame index in a sequence")->capture_default_str();
+  app.add_option("--max-points", opt.max_points,
+                 "Point layers keep at most this many pixels each, as in the GUI (0: all)")
+      ->capture_default_str();
   app.add_option("--depth-scale", opt.depth_scale, "Depth PNG units per metre")->capture_default_str();
   try {
     app.parse(argc, argv);

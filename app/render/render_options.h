@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ui/scene/camera_presets.h"
+#include "ui/scene/scene_geometry.h"
 #include "ui/scene/scene_layers.h"
 
 namespace tunnelmap::render {
@@ -18,6 +19,7 @@ struct RenderOptions {
   std::vector<std::string> sets;     // KEY=VALUE
   std::size_t frame = 0;
   double depth_scale = 1000.0;
+  int max_points = scene::kDefaultDisplayPoints;  // point-layer decimation, as in the GUI
 };
 
 // "1280x720" -> width/height; throws std::invalid_argument.

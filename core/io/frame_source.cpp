@@ -5,6 +5,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <mutex>
 
 #include "core/io/depth_png.h"
 #include "core/io/organized_pcd.h"
@@ -74,7 +76,21 @@ class DatasetSource : public FrameSource {
   Dataset d_;
 };
 
+std::mutex& registry_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::map<std::string, FrameSourceFactory>& registry() {
+  static std::map<std::string, FrameSourceFactory> r;
+  return r;
+}
+
 }  // namespace
+
+void register_frame_source(const std::string& extension, FrameSourceFactory factory) {
+  std::lock_guard<std::mutex> lock(registry_mutex());
+  registry()[lower(extension)] = std::move(factory);
+}
 
 std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOptions& opt) {
   std::error_code ec;
@@ -86,6 +102,14 @@ std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOpti
     return std::make_unique<DatasetSource>(read_dataset(input));
   }
   const std::string ext = lower(fs::path(input).extension().string());
+  FrameSourceFactory factory;
+  {
+    std::lock_guard<std::mutex> lock(registry_mutex());
+    const auto it = registry().find(ext);
+    if (it != registry().end()) factory = it->second;
+  }
+  if (factory) return factory(input, opt);
+  if (ext == ".oni") throw InputError(input, "OpenNI2 recordings (.oni) need a build with OpenNI2 support");
   InputKind kind = ext == ".png"    ? InputKind::DepthPng
                    : ext == ".pcd"  ? InputKind::Pcd
                    : ext == ".json" ? InputKind::Dataset

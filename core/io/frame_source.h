@@ -2,6 +2,7 @@
 // One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, or a
 // dataset folder (or its dataset.json).
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,5 +25,12 @@ class FrameSource {
 // A dataset is read and validated here; its own depth_scale and intrinsics win over `opt`.
 // InputError for a missing input or an unknown type.
 std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOptions& opt);
+
+// Optional input types live outside the core (e.g. ".oni" recordings in tunnelmap_openni, which
+// registers itself at start-up): open_input() asks a registered factory first, by extension
+// (lower case, with the dot). Registering an extension again replaces its factory.
+using FrameSourceFactory =
+    std::function<std::unique_ptr<FrameSource>(const std::string& path, const ReadOptions& opt)>;
+void register_frame_source(const std::string& extension, FrameSourceFactory factory);
 
 }  // namespace tunnelmap

@@ -8,6 +8,7 @@ const char* stage_name(Stage s) {
     case Stage::Normals: return "normals";
     case Stage::Planes: return "planes";
     case Stage::Tunnel: return "tunnel";
+    case Stage::Fusion: return "fusion";
   }
   return "?";
 }
@@ -54,6 +55,9 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Max width/height change from the previous scans' context in a sequence (paper: 40 mm)"},
     {"tunnel.max_pair_angle_deg", "deg", 10.0, 1.0, 45.0, 0.5, false, Stage::Tunnel,
      "Parallel-pair angle", "Max angle between opposite walls (left/right, top/bottom) to be a pair"},
+    {"tunnel.symmetric_step_max_mm", "mm", 30.0, 0.0, 100.0, 1.0, false, Stage::Tunnel,
+     "Symmetric zone prior",
+     "A wall with one zone cluster borrows the opposite wall's edge-to-middle step up to this size; 0 = off"},
     {"tunnel.width_min_m", "m", 0.3, 0.05, 10.0, 0.01, false, Stage::Tunnel, "Width min",
      "Template prior: smallest plausible tunnel width"},
     {"tunnel.width_max_m", "m", 3.0, 0.1, 20.0, 0.01, false, Stage::Tunnel, "Width max",
@@ -64,6 +68,24 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Template prior: largest plausible tunnel height"},
     {"zones.forbidden_band_m", "m", 0.15, 0.0, 1.0, 0.005, false, Stage::Tunnel, "Forbidden band",
      "Width of the riveted edge band along each tunnel corner (prior knowledge)"},
+    // Multi-frame fusion (docs/fusion.md). Not from the paper: sensible values for a VGA
+    // structured-light camera in a ~1 m tunnel.
+    {"fusion.voxel_mm", "mm", 8.0, 2.0, 50.0, 0.5, false, Stage::Fusion, "Voxel size",
+     "Edge of one TSDF voxel; memory grows with its inverse cube"},
+    {"fusion.truncation_mm", "mm", 30.0, 5.0, 200.0, 1.0, false, Stage::Fusion, "Truncation",
+     "TSDF truncation distance; at least ~3 voxels and above the depth noise"},
+    {"fusion.max_depth_m", "m", 2.5, 0.5, 10.0, 0.1, false, Stage::Fusion, "Fusion max depth",
+     "Depth beyond this is not fused (structured-light noise grows with depth squared)"},
+    {"fusion.max_weight", "", 64, 1, 10000, 1, true, Stage::Fusion, "Max weight",
+     "Cap of a voxel's running-average weight (frames); lower adapts faster to pose changes"},
+    {"fusion.min_weight", "", 2, 1, 1000, 1, true, Stage::Fusion, "Min weight",
+     "Mesh only cells whose 8 voxels were seen at least this many times"},
+    {"fusion.bounds_margin_m", "m", 0.05, 0.0, 2.0, 0.01, false, Stage::Fusion, "Bounds margin",
+     "The volume is the box of all fused points (world frame) grown by this margin"},
+    {"fusion.max_extent_m", "m", 12.0, 0.5, 100.0, 0.5, false, Stage::Fusion, "Max extent",
+     "Largest volume side; a bigger point box is refused (asks for a coarser voxel or less depth)"},
+    {"fusion.pose_group_mm", "mm", 50.0, 1.0, 1000.0, 1.0, false, Stage::Fusion, "Pose grouping",
+     "Consecutive frames whose camera moved less than this (and 5 deg) are one arm pose"},
   };
   // clang-format on
   return table;

@@ -44,6 +44,7 @@ TunnelOptions tunnel_options(const Parameters& p) {
   o.height_min_m = p.get("tunnel.height_min_m");
   o.height_max_m = p.get("tunnel.height_max_m");
   o.forbidden_band_m = p.get("zones.forbidden_band_m");
+  o.max_symmetric_step_m = p.get("tunnel.symmetric_step_max_mm") / 1000.0;
   return o;
 }
 

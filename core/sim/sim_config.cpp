@@ -125,6 +125,10 @@ void SimConfig::validate() const {
   check_range("jitter_translation_m", jitter_translation_m, 0.0, 0.05);
   check_range("jitter_rotation_deg", jitter_rotation_deg, 0.0, 5.0);
   check_range("frame_interval_s", frame_interval_s, 1e-6, 3600.0);
+  if (!arm_preset.empty() && arm_preset != "inchworm7")
+    throw ParameterError("simulator: arm_preset must be empty or inchworm7, got '" + arm_preset + "'");
+  check_range("arm_setback_m", arm_setback_m, 0.0, 1.0);
+  check_range("arm_sag_deg_per_m", arm_sag_deg_per_m, 0.0, 10.0);
 }
 
 }  // namespace tunnelmap

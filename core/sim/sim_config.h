@@ -80,6 +80,15 @@ struct SimConfig {
   double jitter_rotation_deg = 0.2;
   double frame_interval_s = 1.0 / 30.0;
 
+  // Eye-in-hand arm (docs/kinematics.md). Empty = no arm: frames carry their exact "pose".
+  // Otherwise each frame's wanted pose is reached by inverse kinematics of this robot preset
+  // (base on the floor centre, `arm_setback_m` behind the camera's pose group), the dataset
+  // gets "robot" and per-frame "joints", and the camera is rendered at the sagged pose
+  // (written as "pose_true", not "pose", so readers use forward kinematics).
+  std::string arm_preset;
+  double arm_setback_m = 0.45;
+  double arm_sag_deg_per_m = 0.0;  // link sag: droop angle per metre of horizontal reach
+
   // Throws ParameterError (one line) for unknown names.
   static SimConfig from_preset(const std::string& name);
   // Throws ParameterError (one line) for the first out-of-range value.

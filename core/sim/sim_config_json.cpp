@@ -52,6 +52,9 @@ json sim_config_to_json(const SimConfig& c) {
   j["jitter_translation_m"] = c.jitter_translation_m;
   j["jitter_rotation_deg"] = c.jitter_rotation_deg;
   j["frame_interval_s"] = c.frame_interval_s;
+  j["arm_preset"] = c.arm_preset;
+  j["arm_setback_m"] = c.arm_setback_m;
+  j["arm_sag_deg_per_m"] = c.arm_sag_deg_per_m;
   return j;
 }
 
@@ -128,6 +131,9 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "jitter_translation_m", c.jitter_translation_m);
     read(j, "jitter_rotation_deg", c.jitter_rotation_deg);
     read(j, "frame_interval_s", c.frame_interval_s);
+    read(j, "arm_preset", c.arm_preset);
+    read(j, "arm_setback_m", c.arm_setback_m);
+    read(j, "arm_sag_deg_per_m", c.arm_sag_deg_per_m);
     c.validate();
     return c;
   } catch (const json::exception& e) {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/kinematics/robot_json.h"
 #include "core/sim/sim_config_json.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/atomic_file.h"
@@ -89,6 +90,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
 
   const Intrinsics K = Intrinsics::primesense_vga();
   json frames = json::array();
+  json robot_json;  // null without an arm
   for (int i = 0; i < sim.frame_count(); ++i) {
     const SimFrame f = sim.render(i);
     const int w = f.frame.width, h = f.frame.height;
@@ -110,9 +112,21 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     json fj = {{"depth", "depth/" + name},
                {"rgb", "rgb/" + rgb_name},
                {"gt_surfaces", "gt/" + name},
-               {"pose", pose_json(*f.frame.pose)},
                {"timestamp", f.frame.timestamp_s},
                {"pose_group", f.pose_group}};
+    if (f.arm) {
+      // Joints only: readers get the pose by forward kinematics, sag included as an error.
+      fj["joints"] = f.arm->joints;
+      fj["robot_base"] = pose_json(f.arm->base);
+      fj["pose_true"] = pose_json(*f.frame.pose);
+      if (!robot_json.is_object()) {
+        RobotModel robot = robot_preset(config.arm_preset);
+        robot.base = f.arm->base;
+        robot_json = robot_to_json(robot);
+      }
+    } else {
+      fj["pose"] = pose_json(*f.frame.pose);
+    }
     if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
     frames.push_back(fj);
     if (progress) progress(i, sim.frame_count(), (root / "depth" / name).string());
@@ -132,7 +146,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
              {"surfaces", surfaces}};
   if (sim.manhole_x()) gt["manhole_x_m"] = *sim.manhole_x();
 
-  const json dataset = {
+  json dataset = {
       {"format", kSimDatasetFormat},
       {"intrinsics",
        {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width},
@@ -142,6 +156,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
       {"frames", frames},
       {"ground_truth", gt},
       {"simulator", sim_config_to_json(config)}};
+  if (robot_json.is_object()) dataset["robot"] = robot_json;
   write_file_atomically((root / "dataset.json").string(),
                         [&](std::ostream& out) { out << dataset.dump(2) << "\n"; });
 }

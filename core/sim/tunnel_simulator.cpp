@@ -81,10 +81,24 @@ Eigen::Matrix3d TunnelSimulator::camera_rotation(double roll_deg, double pitch_d
   return turn * look_from_cam;
 }
 
+double TunnelSimulator::group_x(int g) const {
+  return manhole_x_ ? *manhole_x_ - distance_at(config_, g) : 0.0;
+}
+
 Eigen::Isometry3d TunnelSimulator::pose(int index) const {
+  if (config_.arm_preset.empty()) return wanted_pose(index);
+  return arm_state(index)->true_pose;
+}
+
+std::optional<SimArmState> TunnelSimulator::arm_state(int index) const {
+  if (config_.arm_preset.empty()) return std::nullopt;
+  return solve_sim_arm(config_, group_x(pose_group(index)), wanted_pose(index));
+}
+
+Eigen::Isometry3d TunnelSimulator::wanted_pose(int index) const {
   const int g = pose_group(index);
   const SimCameraPose& p = config_.poses[g % config_.poses.size()];
-  const double x = manhole_x_ ? *manhole_x_ - distance_at(config_, g) : 0.0;
+  const double x = group_x(g);
   sim::SimRandom rng(config_.seed, static_cast<std::uint32_t>(index), sim::kStreamPose);
   const double jt = config_.jitter_translation_m, jr = config_.jitter_rotation_deg;
   const double jx = rng.normal() * jt, jy = rng.normal() * jt, jz = rng.normal() * jt;
@@ -108,8 +122,10 @@ SimFrame TunnelSimulator::render(int index) const {
   f.depth_units_per_m = 1000.0;
   f.depth.assign(static_cast<std::size_t>(K.width) * K.height, 0.0f);
   f.rgb.assign(static_cast<std::size_t>(K.width) * K.height * 3, 0);
-  const Eigen::Isometry3d T = pose(index);
+  out.arm = arm_state(index);
+  const Eigen::Isometry3d T = out.arm ? out.arm->true_pose : pose(index);
   f.pose = T;
+  if (out.arm) f.joints = out.arm->joints;
   f.timestamp_s = index * config_.frame_interval_s;
   f.source = "simulated " + config_.preset + " frame " + std::to_string(index);
   out.surface_id.assign(static_cast<std::size_t>(K.width) * K.height, 0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/frame/depth_frame.h"
+#include "core/sim/sim_arm.h"
 #include "core/sim/sim_config.h"
 #include "core/sim/tunnel_geometry.h"
 
@@ -19,6 +20,7 @@ struct SimFrame {
   std::vector<std::uint16_t> surface_id;  // width*height; true surface even where dropped out
   int pose_group = 0;
   std::optional<double> distance_to_manhole_m;
+  std::optional<SimArmState> arm;  // joints, FK pose, true pose (arm_preset set)
 };
 
 class TunnelSimulator {
@@ -28,7 +30,9 @@ class TunnelSimulator {
 
   int frame_count() const { return config_.frames; }
   SimFrame render(int index) const;
-  Eigen::Isometry3d pose(int index) const;  // camera-to-world, with the frame's jitter
+  Eigen::Isometry3d pose(int index) const;  // camera-to-world, with the frame's jitter (and sag)
+  // Arm state of a frame (nullopt without arm_preset). pose(i) == arm_state(i)->true_pose.
+  std::optional<SimArmState> arm_state(int index) const;
   const std::vector<SimSurface>& surfaces() const { return geometry_.surfaces(); }
   const SimSurface* surface(int id) const;  // nullptr for 0, rivets and unknown ids
 
@@ -46,6 +50,8 @@ class TunnelSimulator {
  private:
   static std::optional<double> compute_manhole_x(const SimConfig& c);
   static std::optional<double> compute_end_x(const SimConfig& c);
+  Eigen::Isometry3d wanted_pose(int index) const;  // nominal + jitter
+  double group_x(int group) const;
   void render_rows(int index, const Eigen::Isometry3d& T, int row_begin, int row_step,
                    SimFrame& out) const;
 

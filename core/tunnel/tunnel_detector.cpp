@@ -37,7 +37,7 @@ void fail(TunnelMap& map, const std::string& status, const std::string& reason) 
 void check_options(const TunnelOptions& o) {
   if (!(o.outlier_bin_deg > 0) || !(o.outlier_max_deg > 0) || !(o.class_angle_deg > 0) ||
       o.class_angle_deg > 45.0 || !(o.zone_cluster_m > 0) || !(o.max_pair_angle_deg > 0) ||
-      !(o.forbidden_band_m >= 0))
+      !(o.forbidden_band_m >= 0) || !(o.max_symmetric_step_m >= 0))
     throw ParameterError("tunnel options out of range (angles and gaps must be > 0, class cone <= 45 deg)");
 }
 
@@ -155,6 +155,32 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   if (!weak.empty()) {
     fail(map, "missing_wall", weak);
     return;
+  }
+  if (opt.max_symmetric_step_m > 0) {  // symmetric zone prior, steps first, then applied
+    // A wall seen only by its middle plate takes the opposite wall's step, else the mean
+    // step of the two perpendicular walls (the rectangular template's other pair).
+    const int opposite[4] = {1, 0, 3, 2};
+    const int perpendicular[4][2] = {{2, 3}, {2, 3}, {0, 1}, {0, 1}};
+    double seen[4], step[4] = {0, 0, 0, 0};
+    for (WallClass c : kWalls)
+      seen[int(c)] = observed_edge_step(map.wall(c).clusters, opt.min_cluster_points,
+                                        opt.max_symmetric_step_m);
+    for (WallClass c : kWalls) {
+      const int ci = int(c);
+      if (!single_supported_zone(map.wall(c).clusters, opt.min_cluster_points)) continue;
+      if (seen[opposite[ci]] > 0) {
+        step[ci] = seen[opposite[ci]];
+      } else {
+        const double a = seen[perpendicular[ci][0]], b = seen[perpendicular[ci][1]];
+        const int k = (a > 0) + (b > 0);
+        step[ci] = k ? (a + b) / k : 0.0;
+      }
+    }
+    for (WallClass c : kWalls) {
+      offsets[int(c)] += step[int(c)];
+      map.wall(c).offset_m = offsets[int(c)];
+      map.wall(c).symmetric_step_m = step[int(c)];
+    }
   }
   const WallOffsets off{offsets[int(WallClass::Left)], offsets[int(WallClass::Right)],
                         offsets[int(WallClass::Top)], offsets[int(WallClass::Bottom)]};

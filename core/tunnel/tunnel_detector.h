@@ -20,6 +20,9 @@ struct TunnelOptions {
   double width_min_m = 0.3, width_max_m = 3.0;
   double height_min_m = 0.3, height_max_m = 3.0;
   double forbidden_band_m = 0.15;
+  // Symmetric zone prior (zone_clustering.h): a wall seen only by its middle plate borrows the
+  // opposite wall's edge-to-middle step, up to this size (0 = off).
+  double max_symmetric_step_m = 0.03;
 };
 
 // Context of previous scans in a sequence: accepted widths/heights. A new frame must agree with

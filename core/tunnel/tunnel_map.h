@@ -38,6 +38,7 @@ struct Wall {
   int inlier_planes = 0;       // planes of this class kept by the histogram test
   int outlier_planes = 0;      // planes of this class rejected by the histogram test
   double normal_sd_deg = 0.0;  // RMS angle of the inlier normals about their mean
+  double symmetric_step_m = 0.0;  // edge step borrowed from the opposite wall (0 = measured)
 };
 
 struct TunnelMap {

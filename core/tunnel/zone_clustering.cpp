@@ -38,4 +38,22 @@ int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int mi
   return best;
 }
 
+double observed_edge_step(const std::vector<ZoneCluster>& clusters, int min_points, double max_step_m) {
+  const int outer = outermost_supported_cluster(clusters, min_points);
+  int dominant = -1;
+  for (size_t i = 0; i < clusters.size(); ++i)
+    if (clusters[i].points >= min_points &&
+        (dominant < 0 || clusters[i].points > clusters[dominant].points))
+      dominant = static_cast<int>(i);
+  if (outer < 0 || dominant < 0 || outer == dominant) return 0.0;
+  const double step = clusters[outer].offset_m - clusters[dominant].offset_m;
+  return step > 0.0 && step <= max_step_m ? step : 0.0;
+}
+
+bool single_supported_zone(const std::vector<ZoneCluster>& clusters, int min_points) {
+  int supported = 0;
+  for (const ZoneCluster& c : clusters) supported += c.points >= min_points;
+  return supported == 1;
+}
+
 }  // namespace tunnelmap

@@ -19,4 +19,14 @@ std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positi
 // Index into `clusters` of the outermost cluster with at least `min_points` points, or -1.
 int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int min_points);
 
+// Symmetric zone prior (paper 2.2: "all zones are symmetric about the tunnel axis", "zones
+// associated with each wall are a plane shifted by small distances"). The edge-to-middle step a
+// wall shows: its outermost supported cluster minus its largest (middle-plate) cluster, when
+// these differ and 0 < step <= max_step_m; else 0.
+double observed_edge_step(const std::vector<ZoneCluster>& clusters, int min_points, double max_step_m);
+
+// True when exactly one cluster has >= min_points: the wall's edge bands were not seen (e.g.
+// at a grazing angle from close by) and that cluster is taken as its middle plate.
+bool single_supported_zone(const std::vector<ZoneCluster>& clusters, int min_points);
+
 }  // namespace tunnelmap

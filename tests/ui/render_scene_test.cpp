@@ -1,6 +1,8 @@
 // Renders TunnelScene through OSMesa (no DISPLAY) and checks what a person would see: not blank,
 // boundary blue and traversable red where the tunnel projects, layers switch off, views differ.
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -159,6 +161,132 @@ TEST(RenderExecutable, SimulatedLabAndFieldFramesRenderWithMap) {
   EXPECT_EQ(WEXITSTATUS(std::system((std::string(TUNNELMAP_RENDER_PATH) + " " + dir +
                                      "/missing.png --screenshot " + dir + "/x.png 2> /dev/null").c_str())), 3);
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+}
+
+// Reference images: the shipped samples rendered by tunnelmap-render (640x360, along view) and
+// compared with tests/ui/reference/*.png. The raw-cloud layer is left out (it is covered above
+// and its speckle would only make the PNGs large). Regenerate after an intended visual change:
+//   TUNNELMAP_UPDATE_REFERENCES=1 ctest -R ui.render
+// then look at the new PNGs before committing them.
+struct ReferenceCase {
+  const char* name;    // reference file stem
+  const char* sample;  // resources/sample/<sample>
+  const char* preset;  // resources/presets/<preset>.json
+  int frame;
+};
+
+// A rendered pixel "differs" when any channel is off by more than this (antialiased edges and
+// point rasterisation move by a pixel; a changed colour or a missing layer moves far more)...
+constexpr int kPixelTolerance = 48;
+// ...and the image matches when at most this fraction of its pixels differ.
+constexpr double kMaxDifferingFraction = 0.01;
+constexpr const char* kReferenceLayers = "planes,boundary,traversable,forbidden,legend";
+
+struct RenderRun {
+  scene::RgbImage image;
+  std::string summary;
+  scene::PixelBox boundary;  // projected tunnel boundary, from the summary line
+};
+
+RenderRun run_renderer(const ReferenceCase& c, const std::string& png) {
+  const std::string root = std::string(TUNNELMAP_UI_TEST_DIR) + "/../..";
+  const std::string cmd = std::string("env -u DISPLAY ") + TUNNELMAP_RENDER_PATH + " " + root +
+                          "/resources/sample/" + c.sample + " --params " + root + "/resources/presets/" +
+                          c.preset + ".json --frame " + std::to_string(c.frame) +
+                          " --size 640x360 --view along --layers " + kReferenceLayers +
+                          " --screenshot " + png + " > " + png + ".txt";
+  RenderRun r;
+  if (std::system(cmd.c_str()) != 0) {
+    ADD_FAILURE() << "failed: " << cmd;
+    return r;
+  }
+  std::ifstream in(png + ".txt");
+  std::getline(in, r.summary);
+  const auto at = r.summary.find("boundary box ");
+  if (at != std::string::npos &&
+      std::sscanf(r.summary.c_str() + at, "boundary box %d,%d %d,%d", &r.boundary.x0, &r.boundary.y0,
+                  &r.boundary.x1, &r.boundary.y1) == 4)
+    r.boundary.count = 4;
+  r.image = scene::load_png(png);
+  return r;
+}
+
+TEST(ReferenceImages, SampleLabAndFieldFramesMatchTheirReferences) {
+  const std::string dir = ::testing::TempDir() + "tunnelmap_reference";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const bool update = std::getenv("TUNNELMAP_UPDATE_REFERENCES") &&
+                      std::string(std::getenv("TUNNELMAP_UPDATE_REFERENCES")) == "1";
+  // Field frame 2 is the one nearest the manhole plate (1.8 m, dataset.json).
+  for (const ReferenceCase c : {ReferenceCase{"lab_frame0", "lab", "lab", 0},
+                                ReferenceCase{"field_frame2_manhole", "field", "field", 2}}) {
+    SCOPED_TRACE(c.name);
+    const std::string png = dir + "/" + c.name + ".png";
+    const RenderRun r = run_renderer(c, png);
+    ASSERT_EQ(r.image.width, 640);
+    ASSERT_EQ(r.image.height, 360);
+    ASSERT_NE(r.summary.find("tunnel ok"), std::string::npos) << r.summary;
+    ASSERT_EQ(r.boundary.count, 4) << r.summary;
+    EXPECT_GT(scene::distinct_colors(r.image), 20) << "blank or flat image";
+
+    // Map colours are drawn, and (nearly) all of them inside the projected tunnel boundary. The
+    // legend (lower right, its swatches are blue and red too) is blacked out first.
+    scene::RgbImage map_only = r.image;
+    for (int y = map_only.height * 64 / 100; y < map_only.height; ++y)
+      for (int x = map_only.width * 83 / 100; x < map_only.width; ++x)
+        std::fill_n(&map_only.rgb[(static_cast<std::size_t>(y) * map_only.width + x) * 3], 3, 0);
+    const auto blue = scene::find_boundary_blue(map_only);
+    const auto red = scene::find_traversable_red(map_only);
+    const auto& b = r.boundary;
+    const auto blue_in = scene::find_boundary_blue(map_only, b.x0 - 4, b.y0 - 4, b.x1 + 4, b.y1 + 4);
+    const auto red_in = scene::find_traversable_red(map_only, b.x0 - 4, b.y0 - 4, b.x1 + 4, b.y1 + 4);
+    EXPECT_GT(blue.count, 300);
+    EXPECT_GT(red.count, 10000);
+    EXPECT_GE(blue_in.count, blue.count * 0.98) << r.summary;
+    EXPECT_GE(red_in.count, red.count * 0.98) << r.summary;
+    // Red on both side walls: left and right of the image centre.
+    EXPECT_LT(red.x0, 200);
+    EXPECT_GT(red.x1, 440);
+
+    const std::string ref_path = std::string(TUNNELMAP_UI_TEST_DIR) + "/reference/" + c.name + ".png";
+    if (update) {
+      std::filesystem::create_directories(std::string(TUNNELMAP_UI_TEST_DIR) + "/reference");
+      scene::save_png(r.image, ref_path);
+      std::cout << "[ UPDATED  ] " << ref_path << "\n";
+      continue;
+    }
+    ASSERT_TRUE(std::filesystem::exists(ref_path))
+        << ref_path << " is missing: run with TUNNELMAP_UPDATE_REFERENCES=1 to create it";
+    const scene::RgbImage ref = scene::load_png(ref_path);
+    const auto diff = scene::compare_images(r.image, ref, kPixelTolerance);
+    std::cout << "[ COMPARE  ] " << c.name << ": " << diff.fraction_over * 100.0
+              << " % of pixels differ (limit " << kMaxDifferingFraction * 100.0
+              << " %), mean abs " << diff.mean_abs << "\n";
+    EXPECT_LE(diff.fraction_over, kMaxDifferingFraction)
+        << "differs from " << ref_path << "; the new image is " << png
+        << " (TUNNELMAP_UPDATE_REFERENCES=1 regenerates the references)";
+    // The tolerance is tight enough that a blank (background) or black image fails.
+    scene::RgbImage black = ref, background = ref;
+    std::fill(black.rgb.begin(), black.rgb.end(), 0);
+    for (std::size_t i = 0; i < background.rgb.size(); i += 3)
+      std::copy(ref.rgb.begin(), ref.rgb.begin() + 3, background.rgb.begin() + i);  // corner colour
+    EXPECT_GT(scene::compare_images(black, ref, kPixelTolerance).fraction_over, 20 * kMaxDifferingFraction);
+    EXPECT_GT(scene::compare_images(background, ref, kPixelTolerance).fraction_over, 20 * kMaxDifferingFraction);
+  }
+}
+
+// The same input renders to the same pixels twice in a row (what makes the references stable).
+TEST(ReferenceImages, RenderingIsDeterministic) {
+  const std::string dir = ::testing::TempDir() + "tunnelmap_determinism";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const ReferenceCase c{"lab", "lab", "lab", 0};
+  const RenderRun a = run_renderer(c, dir + "/a.png");
+  const RenderRun b = run_renderer(c, dir + "/b.png");
+  ASSERT_FALSE(a.image.empty());
+  const auto diff = scene::compare_images(a.image, b.image, 0);
+  EXPECT_EQ(diff.fraction_over, 0.0);
+  EXPECT_EQ(a.summary.substr(a.summary.find(':')), b.summary.substr(b.summary.find(':')));
 }
 
 }  // namespace

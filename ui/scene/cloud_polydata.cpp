@@ -65,10 +65,32 @@ class PointsBuilder {
   vtkSmartPointer<vtkUnsignedCharArray> colors_ = vtkSmartPointer<vtkUnsignedCharArray>::New();
 };
 
+// Calls f(index) for every `stride`-th pixel of every `stride`-th row (a cloud that is not a
+// full width x height grid is sampled as one row).
+template <class F>
+void for_sampled(const OrganizedCloud& cloud, int stride, F&& f) {
+  int w = cloud.width, h = cloud.height;
+  if (static_cast<std::size_t>(w) * h != cloud.points.size() || w <= 0 || h <= 0) {
+    w = static_cast<int>(cloud.points.size());
+    h = 1;
+  }
+  for (int v = 0; v < h; v += stride)
+    for (int u = 0; u < w; u += stride) f(static_cast<std::size_t>(v) * w + u);
+}
+
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> make_cloud_polydata(const SceneData& data) {
-  PointsBuilder out(data.cloud ? static_cast<vtkIdType>(data.cloud->points.size()) : 0);
+int display_stride(int width, int height, int max_points) {
+  if (max_points <= 0 || width <= 0 || height <= 0) return 1;
+  int stride = 1;
+  while (static_cast<long long>((width + stride - 1) / stride) * ((height + stride - 1) / stride) > max_points)
+    ++stride;
+  return stride;
+}
+
+vtkSmartPointer<vtkPolyData> make_cloud_polydata(const SceneData& data, int stride) {
+  stride = std::max(1, stride);
+  PointsBuilder out(data.cloud ? static_cast<vtkIdType>(data.cloud->points.size() / (stride * stride)) : 0);
   if (!data.cloud) return out.finish();
   const OrganizedCloud& cloud = *data.cloud;
   const bool rgb = data.frame && data.frame->has_rgb() && data.frame->width == cloud.width &&
@@ -80,18 +102,19 @@ vtkSmartPointer<vtkPolyData> make_cloud_polydata(const SceneData& data) {
       zmax = std::max(zmax, p.z());
     }
   const double span = zmax > zmin ? zmax - zmin : 1.0;
-  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+  for_sampled(cloud, stride, [&](std::size_t i) {
     const auto& p = cloud.points[i];
-    if (!OrganizedCloud::valid(p)) continue;
+    if (!OrganizedCloud::valid(p)) return;
     if (rgb)
       out.add(p, &data.frame->rgb[i * 3]);
     else
       out.add(p, depth_color((p.z() - zmin) / span));
-  }
+  });
   return out.finish();
 }
 
-vtkSmartPointer<vtkPolyData> make_planes_polydata(const SceneData& data) {
+vtkSmartPointer<vtkPolyData> make_planes_polydata(const SceneData& data, int stride) {
+  stride = std::max(1, stride);
   PointsBuilder out;
   if (!data.cloud || !data.planes) return out.finish();
   const OrganizedCloud& cloud = *data.cloud;
@@ -107,12 +130,12 @@ vtkSmartPointer<vtkPolyData> make_planes_polydata(const SceneData& data) {
     color_of[planes.planes[k].id] = wall_class_color(cls);
   }
   const Rgb unassigned = wall_class_color(WallClass::Unassigned);
-  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+  for_sampled(cloud, stride, [&](std::size_t i) {
     const std::int32_t id = planes.labels[i];
-    if (id <= 0 || !OrganizedCloud::valid(cloud.points[i])) continue;
+    if (id <= 0 || !OrganizedCloud::valid(cloud.points[i])) return;
     auto it = color_of.find(id);
     out.add(cloud.points[i], it == color_of.end() ? unassigned : it->second);
-  }
+  });
   return out.finish();
 }
 

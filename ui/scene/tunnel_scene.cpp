@@ -2,15 +2,16 @@
 
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
+#include <vtkCoordinate.h>
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
 
-#include "ui/scene/cloud_polydata.h"
-#include "ui/scene/frustum_polydata.h"
+#include <algorithm>
+#include <string>
+
 #include "ui/scene/scene_colors.h"
-#include "ui/scene/tunnel_polydata.h"
 
 namespace tunnelmap::scene {
 
@@ -122,16 +123,23 @@ void TunnelScene::build_legend() {
   legend_->SetNumberOfEntries(static_cast<int>(entries.size()));
   for (std::size_t i = 0; i < entries.size(); ++i) {
     double c[3] = {entries[i].color[0], entries[i].color[1], entries[i].color[2]};
-    legend_->SetEntry(static_cast<int>(i), symbol, entries[i].text, c);
+    // Leading spaces: the swatch is drawn over the start of the entry's text box.
+    legend_->SetEntry(static_cast<int>(i), symbol, (std::string("  ") + entries[i].text).c_str(), c);
   }
   legend_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
   legend_->GetPositionCoordinate()->SetValue(0.84, 0.02);
   legend_->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
   legend_->GetPosition2Coordinate()->SetValue(0.15, 0.32);
-  legend_->UseBackgroundOff();
+  legend_->UseBackgroundOff();  // see set_legend_background()
   legend_->GetEntryTextProperty()->SetColor(0.95, 0.95, 0.95);
   legend_->GetEntryTextProperty()->ShadowOff();
   renderer_->AddViewProp(legend_);
+}
+
+void TunnelScene::set_legend_background(bool on) {
+  legend_->SetUseBackground(on);
+  legend_->SetBackgroundColor(kBackground[0], kBackground[1], kBackground[2]);
+  legend_->SetBackgroundOpacity(0.9);
 }
 
 void TunnelScene::set_input(Layer layer, vtkPolyData* poly) {
@@ -146,21 +154,32 @@ void TunnelScene::clear() {
 }
 
 void TunnelScene::update(const SceneData& data, bool rebuild_cloud) {
-  if (rebuild_cloud) set_input(Layer::Cloud, make_cloud_polydata(data));
-  set_input(Layer::Planes, make_planes_polydata(data));
-  set_input(Layer::Mesh, data.mesh ? data.mesh.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
-  map_ = data.map ? *data.map : TunnelMap();
-  set_input(Layer::Boundary, make_boundary_polydata(map_));
-  set_input(Layer::Traversable, make_zones_polydata(map_, ZoneKind::Traversable));
-  set_input(Layer::Forbidden, make_zones_polydata(map_, ZoneKind::Forbidden));
-  Intrinsics k = data.frame ? data.frame->intrinsics
-                            : (data.cloud ? data.cloud->intrinsics : Intrinsics::primesense_vga());
-  set_input(Layer::Frustum, make_frustum_polydata(k, 0.3));
-  if (data.mesh) {
-    // A mesh that carries colours shows them; otherwise a neutral grey.
-    auto* mapper = actors_[idx(Layer::Mesh)]->GetMapper();
-    mapper->SetScalarVisibility(data.mesh->GetPointData()->GetScalars() != nullptr);
-  }
+  GeometryOptions options;
+  options.max_points = max_points_;
+  options.cloud = rebuild_cloud;
+  set_geometry(build_geometry(data, options));
+}
+
+void TunnelScene::set_geometry(const SceneGeometry& g) {
+  if (g.cloud) set_input(Layer::Cloud, g.cloud);
+  set_input(Layer::Planes, g.planes);
+  set_input(Layer::Boundary, g.boundary);
+  set_input(Layer::Traversable, g.traversable);
+  set_input(Layer::Forbidden, g.forbidden);
+  set_input(Layer::Frustum, g.frustum);
+  if (g.mesh) set_mesh(g.mesh);
+  map_ = g.map;
+  // Decimated point layers draw larger points so surfaces stay closed on screen.
+  actors_[idx(Layer::Cloud)]->GetProperty()->SetPointSize(std::max(2, g.stride));
+  actors_[idx(Layer::Planes)]->GetProperty()->SetPointSize(g.stride + 1);
+}
+
+void TunnelScene::set_mesh(vtkPolyData* mesh) {
+  vtkSmartPointer<vtkPolyData> poly = mesh;
+  if (!poly) poly = vtkSmartPointer<vtkPolyData>::New();
+  set_input(Layer::Mesh, poly);
+  // A mesh that carries colours shows them; otherwise a neutral grey.
+  actors_[idx(Layer::Mesh)]->GetMapper()->SetScalarVisibility(poly->GetPointData()->GetScalars() != nullptr);
 }
 
 void TunnelScene::set_layer_visible(Layer layer, bool visible) {
@@ -176,6 +195,36 @@ void TunnelScene::set_layer_visible(Layer layer, bool visible) {
 void TunnelScene::show_only(const std::vector<Layer>& layers) {
   for (Layer l : all_layers()) set_layer_visible(l, false);
   for (Layer l : layers) set_layer_visible(l, true);
+}
+
+vtkPolyData* TunnelScene::layer_polydata(Layer layer) const {
+  const auto& actor = actors_[idx(layer)];
+  return actor ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)) : nullptr;
+}
+
+PixelBox TunnelScene::projected_boundary(int width, int height) const {
+  PixelBox box;
+  if (!map_.detected) return box;
+  box.x0 = width;
+  box.y0 = height;
+  auto coord = vtkSmartPointer<vtkCoordinate>::New();
+  coord->SetCoordinateSystemToWorld();
+  for (const Wall& wall : map_.walls) {
+    if (!wall.found) continue;
+    for (const auto& c : wall.boundary) {
+      if (!c.allFinite()) continue;
+      coord->SetValue(c.x(), c.y(), c.z());
+      const int* d = coord->GetComputedDisplayValue(renderer_);
+      const int x = d[0], y = height - 1 - d[1];
+      box.x0 = std::min(box.x0, x);
+      box.x1 = std::max(box.x1, x);
+      box.y0 = std::min(box.y0, y);
+      box.y1 = std::max(box.y1, y);
+      ++box.count;
+    }
+  }
+  if (box.count == 0) box = PixelBox();
+  return box;
 }
 
 vtkIdType TunnelScene::layer_size(Layer layer) const {

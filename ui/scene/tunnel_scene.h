@@ -12,8 +12,10 @@
 #include <vtkSmartPointer.h>
 
 #include "ui/scene/camera_presets.h"
+#include "ui/scene/image_checks.h"
 #include "ui/scene/scene_colors.h"
 #include "ui/scene/scene_data.h"
+#include "ui/scene/scene_geometry.h"
 #include "ui/scene/scene_layers.h"
 
 namespace tunnelmap::scene {
@@ -27,7 +29,19 @@ class TunnelScene {
   // Rebuilds the layers from `data` (pointers need only live during the call). With
   // `rebuild_cloud` false the point-cloud layer is kept (its input did not change).
   void update(const SceneData& data, bool rebuild_cloud = true);
+  // Shows geometry built elsewhere (e.g. on a worker thread); null cloud/mesh keep theirs.
+  void set_geometry(const SceneGeometry& geometry);
+  // A mesh (e.g. a fused mesh PLY) in the camera frame of the shown frame; null clears it.
+  void set_mesh(vtkPolyData* mesh);
   void clear();
+
+  // A dark box behind the legend, readable over the zones. Off by default: under OSMesa the box
+  // hides the entries (VTK 9.1), so only the GUI (GLX) turns it on.
+  void set_legend_background(bool on);
+
+  // Point-layer decimation for update() (see scene_geometry.h); <= 0: full density.
+  void set_max_display_points(int n) { max_points_ = n; }
+  int max_display_points() const { return max_points_; }
 
   void set_layer_visible(Layer layer, bool visible);
   bool layer_visible(Layer layer) const { return visible_[static_cast<int>(layer)]; }
@@ -37,6 +51,12 @@ class TunnelScene {
 
   // Number of points / cells currently in a polydata layer (for tests and the status bar).
   vtkIdType layer_size(Layer layer) const;
+  // The polydata a layer currently draws (null for axes/legend).
+  vtkPolyData* layer_polydata(Layer layer) const;
+
+  // Pixel box (top row = 0) of the map's boundary corners as the current camera projects them
+  // into a `width` x `height` image; count 0 when no boundary is detected.
+  PixelBox projected_boundary(int width, int height) const;
 
  private:
   vtkSmartPointer<vtkActor> make_actor(const Rgb* color, double point_size, double line_width,
@@ -50,6 +70,7 @@ class TunnelScene {
   vtkSmartPointer<vtkLegendBoxActor> legend_;
   std::array<bool, kLayerCount> visible_;
   TunnelMap map_;  // copy of the last map, for the camera presets
+  int max_points_ = kDefaultDisplayPoints;
 };
 
 }  // namespace tunnelmap::scene

@@ -1,0 +1,57 @@
+#include "core/evaluation/cell_result.h"
+
+#include <cmath>
+#include <limits>
+
+namespace tunnelmap {
+
+double CellResult::mean_abs_error_mm() const {
+  if (detected == 0 || !gt_width_m || !gt_height_m) return std::numeric_limits<double>::quiet_NaN();
+  return 500.0 * (width_abs_error_m + height_abs_error_m);
+}
+
+void CellAccumulator::add(const FrameResult& r, const std::vector<std::uint16_t>* truth) {
+  ++frames_;
+  ms_.push_back(r.timings_ms.count("total") ? r.timings_ms.at("total") : 0.0);
+  if (r.map.detected) {
+    widths_.push_back(r.map.width_m);
+    heights_.push_back(r.map.height_m);
+  }
+  if (truth && !truth->empty() && !r.planes.labels.empty()) {
+    has_segmentation_ = true;
+    segmentation_ += score_segmentation(r.planes, *truth);
+  }
+}
+
+namespace {
+void mean_std(const std::vector<double>& v, double& mean, double& sd) {
+  mean = sd = 0;
+  if (v.empty()) return;
+  for (double x : v) mean += x;
+  mean /= v.size();
+  for (double x : v) sd += (x - mean) * (x - mean);
+  sd = std::sqrt(sd / v.size());  // population sigma, like the paper's table
+}
+double mean_abs_error(const std::vector<double>& v, double truth) {
+  if (v.empty()) return 0;
+  double s = 0;
+  for (double x : v) s += std::abs(x - truth);
+  return s / v.size();
+}
+}  // namespace
+
+void CellAccumulator::finish(CellResult& out) const {
+  out.frames = frames_;
+  out.detected = static_cast<int>(widths_.size());
+  mean_std(widths_, out.width_mean_m, out.width_std_m);
+  mean_std(heights_, out.height_mean_m, out.height_std_m);
+  if (out.gt_width_m) out.width_abs_error_m = mean_abs_error(widths_, *out.gt_width_m);
+  if (out.gt_height_m) out.height_abs_error_m = mean_abs_error(heights_, *out.gt_height_m);
+  double ms = 0;
+  for (double x : ms_) ms += x;
+  out.ms_mean = ms_.empty() ? 0 : ms / ms_.size();
+  out.has_segmentation = has_segmentation_;
+  out.segmentation = segmentation_;
+}
+
+}  // namespace tunnelmap

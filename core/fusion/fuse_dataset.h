@@ -1,0 +1,45 @@
+#pragma once
+// Fuses a posed dataset: resolves every frame's camera pose (explicit pose, else forward
+// kinematics of its joints), runs the per-frame tunnel detection (with the sequence context),
+// integrates all frames into one TSDF volume and merges the per-frame maps in the world frame.
+// Mesh extraction needs VTK and lives in mesh/ (extract_mesh), outside the core.
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/io/dataset.h"
+#include "core/kinematics/frame_pose.h"
+#include "core/mapping/multi_scan_map.h"
+#include "core/fusion/tsdf_volume.h"
+#include "core/params/parameters.h"
+#include "core/util/stage_timer.h"
+
+namespace tunnelmap {
+
+struct FusedFrame {
+  int index = 0;
+  PoseSource pose_source = PoseSource::None;
+  Eigen::Isometry3d camera_to_world = Eigen::Isometry3d::Identity();
+  TunnelMap map;  // per-frame detection, camera frame
+  int pose_group = 0;
+};
+
+struct FuseSettings {
+  bool prefer_joints = false;  // use FK even where a frame has an explicit pose
+  bool detect = true;          // per-frame tunnel detection + merged map
+  int threads = 0;             // TSDF integration threads (0 = all cores, at most 8)
+  std::function<void(const std::string& stage, int done, int total)> progress;
+};
+
+struct FusionResult {
+  std::unique_ptr<TsdfVolume> volume;
+  std::vector<FusedFrame> frames;
+  MultiScanMap merged;
+  StageTimings timings_ms;  // "load+detect", "integrate", "total"
+};
+
+// InputError (naming dataset.json and the frame) for a frame without pose and joints.
+FusionResult fuse_dataset(const Dataset& dataset, const Parameters& params,
+                          const FuseSettings& settings = FuseSettings());
+
+}  // namespace tunnelmap
