@@ -41,7 +41,7 @@ void write_results_json(const std::string& path, const std::string& input,
   j["params"] = params;
   j["frames"] = nlohmann::json::array();
   for (const auto& r : records)
-    j["frames"].push_back({{"index", r.index}, {"detected", r.detected}, {"status", r.status},
+    j["frames"].push_back({{"index", r.index}, {"method", method_name(r.method)}, {"detected", r.detected}, {"status", r.status},
                            {"width_m", r.width_m}, {"height_m", r.height_m}, {"planes", r.planes},
                            {"timings_ms", r.timings_ms}});
   const RunningStats s = running_stats(records);
@@ -53,12 +53,12 @@ void write_results_json(const std::string& path, const std::string& input,
 
 void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records) {
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "frame,detected,status,width_m,height_m,planes,total_ms\n";
+    out << "frame,detected,status,width_m,height_m,planes,total_ms,method\n";
     for (const auto& r : records) {
       auto t = r.timings_ms.find("total");
       out << r.index << ',' << (r.detected ? 1 : 0) << ',' << r.status << ',' << r.width_m << ','
           << r.height_m << ',' << r.planes << ',' << (t == r.timings_ms.end() ? 0.0 : t->second)
-          << "\n";
+          << ',' << method_name(r.method) << "\n";
     }
   });
 }

@@ -6,21 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "core/baselines/method.h"
 #include "core/pipeline/pipeline.h"
 
 namespace tunnelmap::ui {
 
 struct FrameRecord {
   int index = 0;
+  Method method = Method::Pgc;
   bool detected = false;
   std::string status;
   double width_m = 0.0, height_m = 0.0;
   int planes = 0;
   StageTimings timings_ms;
 
-  static FrameRecord from(int index, const FrameResult& r) {
+  static FrameRecord from(int index, const FrameResult& r, Method method = Method::Pgc) {
     FrameRecord f;
     f.index = index;
+    f.method = method;
     f.detected = r.map.detected;
     f.status = r.map.status;
     f.width_m = r.map.width_m;

@@ -1,11 +1,15 @@
 #include "ui/main_window.h"
 
+#include <QActionGroup>
 #include <QApplication>
+#include <QComboBox>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QHBoxLayout>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -26,7 +30,10 @@
 #include "core/export/planes_ply.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "sensors/openni/device_list.h"
 #include "ui/depth_view_widget.h"
+#include "ui/fused_scene.h"
+#include "ui/live_view.h"
 #include "ui/parameter_panel.h"
 #include "ui/results_panel.h"
 #include "ui/timeline_widget.h"
@@ -53,9 +60,25 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   params_ = new ParameterPanel(this);
   params_->setMinimumWidth(450);  // label + slider + value + reset per row
+  // Method selector above the parameters (same choice as Processing > Method).
+  auto* params_box = new QWidget(this);
+  auto* params_layout = new QVBoxLayout(params_box);
+  params_layout->setContentsMargins(0, 0, 0, 0);
+  auto* method_row = new QHBoxLayout;
+  method_row->addWidget(new QLabel(tr("Method:"), params_box));
+  method_combo_ = new QComboBox(params_box);
+  method_combo_->setObjectName("methodCombo");
+  for (Method m : {Method::Pgc, Method::Ransac, Method::Qhull})
+    method_combo_->addItem(QString::fromUtf8(method_display_name(m)), static_cast<int>(m));
+  method_row->addWidget(method_combo_, 1);
+  params_layout->addLayout(method_row);
+  params_layout->addWidget(params_, 1);
+  connect(method_combo_, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this](int i) {
+    set_method(static_cast<Method>(method_combo_->itemData(i).toInt()));
+  });
   auto* params_dock = new QDockWidget(tr("Parameters"), this);
   params_dock->setObjectName("parametersDock");
-  params_dock->setWidget(params_);
+  params_dock->setWidget(params_box);
   addDockWidget(Qt::LeftDockWidgetArea, params_dock);
 
   auto* bottom = new QWidget(this);
@@ -124,6 +147,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(depth_view_, &DepthViewWidget::hovered, this,
           [this](const QString& t) { statusBar()->showMessage(t, 3000); });
+  live_ = new LiveView(this);
+  live_->parameters = [this] { return params_->parameters(); };
+  live_->method = [this] { return method_; };
+  connect(live_, &LiveView::frameReady, this, &MainWindow::on_live_frame);
+  connect(live_, &LiveView::failed, this, [this](const QString& m) {
+    update_device_actions();
+    show_error(m);
+  });
   build_menus();
 
   QSettings settings;
@@ -143,6 +174,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
+  live_->stop();
   cancel_.store(true);
   sequence_future_.waitForFinished();
 }
@@ -150,8 +182,8 @@ MainWindow::~MainWindow() {
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open…"), this, [this] {
-    const QString path = ask_open_path(tr("Open depth PNG, PCD or dataset.json"),
-                                       tr("Inputs (*.png *.pcd *.json);;All files (*)"));
+    const QString path = ask_open_path(tr("Open depth PNG, PCD, OpenNI recording or dataset.json"),
+                                       tr("Inputs (*.png *.pcd *.oni *.json);;All files (*)"));
     if (!path.isEmpty()) open_input(path);
   }, QKeySequence::Open)->setObjectName("open");
   file->addAction(tr("Open &folder…"), this, [this] {
@@ -188,9 +220,44 @@ void MainWindow::build_menus() {
     if (!p.isEmpty()) save_screenshot(p);
   })->setObjectName("saveScreenshot");
   file->addSeparator();
-  file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence);
+  file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence)
+      ->setObjectName("processSequence");
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+  QMenu* processing = menuBar()->addMenu(tr("&Processing"));
+  QMenu* method_menu = processing->addMenu(tr("&Method"));
+  method_actions_ = new QActionGroup(this);
+  for (Method m : {Method::Pgc, Method::Ransac, Method::Qhull}) {
+    QAction* a = method_menu->addAction(QString::fromUtf8(method_display_name(m)).replace("&", "&&"));
+    a->setObjectName(QString("method_") + method_name(m));
+    a->setCheckable(true);
+    a->setChecked(m == method_);
+    method_actions_->addAction(a);
+    connect(a, &QAction::triggered, this, [this, m] { set_method(m); });
+  }
+  processing->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence);
+  processing->addAction(tr("&Fuse sequence"), this, &MainWindow::fuse_sequence)->setObjectName("fuseSequence");
+
+  QMenu* device = menuBar()->addMenu(tr("&Device"));
+  device->addAction(tr("&Refresh device list"), this, [this] { refresh_devices(); })->setObjectName("refreshDevices");
+  devices_menu_ = device->addMenu(tr("&Devices"));
+  device_actions_ = new QActionGroup(this);
+  device->addAction(tr("&Start live view"), this, [this] { start_live_view(QString()); })->setObjectName("startLive");
+  device->addAction(tr("Start live view on &URI…"), this, [this] {
+    bool ok = false;
+    const QString uri = QInputDialog::getText(this, tr("Live view"), tr("OpenNI2 device URI:"), QLineEdit::Normal,
+                                              "tunnelmap-sim://lab", &ok);
+    if (ok && !uri.isEmpty()) start_live_view(uri);
+  });
+  device->addAction(tr("S&top live view"), this, &MainWindow::stop_live_view)->setObjectName("stopLive");
+  device->addSeparator();
+  device->addAction(tr("&Record…"), this, [this] {
+    const QString p = ask_save_path(tr("Record OpenNI2 .oni"), tr("OpenNI recording (*.oni)"), "oni");
+    if (!p.isEmpty()) start_recording(p);
+  })->setObjectName("record");
+  device->addAction(tr("Stop r&ecording"), this, [this] { stop_recording(); })->setObjectName("stopRecording");
+  update_device_actions();
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   for (scene::Layer layer : scene::all_layers()) {
@@ -243,6 +310,7 @@ bool MainWindow::open_input(const QString& path) {
     return false;
   }
   cancel_.store(true);
+  if (live_->running()) stop_live_view();
   source_ = source;
   input_path_ = path;
   frame_index_ = 0;
@@ -269,18 +337,13 @@ bool MainWindow::select_frame(int index) {
 }
 
 void MainWindow::request_run(bool immediate) {
-  if (!source_) return;
+  if (!source_ || live_->running()) return;  // the live view picks up changes with its next frame
   if (!immediate) return debounce_.start();
   debounce_.stop();
-  runner_.request(frame_index_, params_->parameters());
+  runner_.request(frame_index_, params_->parameters(), method_);
 }
 
-void MainWindow::on_run_finished(const RunOutcome& outcome) {
-  last_ = outcome;
-  if (!outcome.processed) {
-    show_error(outcome.error);
-    return;
-  }
+void MainWindow::show_views(const RunOutcome& outcome) {
   current_ = outcome.processed;
   QElapsedTimer shown;
   shown.start();
@@ -292,11 +355,138 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
   depth_view_->show_frame(current_, outcome.depth_image);
   last_show_ms_ = shown.nsecsElapsed() / 1e6;
   if (mesh_world_ && outcome.frame_index != mesh_frame_) show_mesh();  // another frame's pose
-  results_->set_record(FrameRecord::from(outcome.frame_index, current_->result));
+}
+
+void MainWindow::on_live_frame(const RunOutcome& outcome) {
+  last_ = outcome;
+  if (!outcome.processed) return status_label_->setText(outcome.error);  // keep streaming
+  show_views(outcome);
+  const LiveStats st = live_->stats();
+  const auto& m = current_->result.map;
+  QString text = tr("Live %1 — %2 — %3 — %4 fps, latency %5 ms, %6 received, %7 dropped")
+                     .arg(live_->uri())
+                     .arg(QString::fromUtf8(method_display_name(outcome.method)))
+                     .arg(m.detected ? tr("width %1 m, height %2 m").arg(m.width_m, 0, 'f', 3).arg(m.height_m, 0, 'f', 3)
+                                     : QString::fromStdString(m.status))
+                     .arg(st.fps, 0, 'f', 1)
+                     .arg(st.latency_ms, 0, 'f', 0)
+                     .arg(st.received)
+                     .arg(st.dropped);
+  if (live_->recording()) text += tr(" — recording (%1 frames)").arg(live_->frames_recorded());
+  status_label_->setText(text);
+  ++shown_runs_;
+  emit frameShown();
+}
+
+QStringList MainWindow::refresh_devices() {
+  QStringList uris;
+  try {
+    for (const auto& d : openni2::list_devices(false)) uris << QString::fromStdString(d.uri);
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+  }
+  const QString chosen = device_actions_->checkedAction() ? device_actions_->checkedAction()->data().toString() : QString();
+  devices_menu_->clear();
+  for (QAction* a : device_actions_->actions()) device_actions_->removeAction(a);
+  for (const QString& uri : uris) {
+    QAction* a = devices_menu_->addAction(uri);
+    a->setData(uri);
+    a->setCheckable(true);
+    a->setChecked(uri == chosen || (chosen.isEmpty() && uri == uris.first()));
+    device_actions_->addAction(a);
+  }
+  devices_menu_->setEnabled(!uris.isEmpty());
+  status_label_->setText(uris.isEmpty() ? tr("No OpenNI2 device found") : tr("%1 device(s): %2").arg(uris.size()).arg(uris.join(", ")));
+  return uris;
+}
+
+bool MainWindow::start_live_view(const QString& uri_in) {
+  QString uri = uri_in;
+  if (uri.isEmpty() && device_actions_->checkedAction()) uri = device_actions_->checkedAction()->data().toString();
+  if (uri.isEmpty()) uri = "default";
+  cancel_.store(true);  // a running sequence stops: the views show the device now
+  try {
+    live_->start(uri);
+  } catch (const std::exception& e) {
+    update_device_actions();
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  reset_camera_ = true;
+  results_->clear();
+  status_label_->setText(tr("Live %1: waiting for the first frame…").arg(uri));
+  update_device_actions();
+  return true;
+}
+
+void MainWindow::stop_live_view() {
+  if (live_->recording()) stop_recording();
+  live_->stop();
+  update_device_actions();
+  status_label_->setText(tr("Live view stopped"));
+}
+
+bool MainWindow::start_recording(const QString& path) {
+  try {
+    live_->start_recording(path);
+  } catch (const std::exception& e) {
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  update_device_actions();
+  status_label_->setText(tr("Recording to %1").arg(path));
+  return true;
+}
+
+bool MainWindow::stop_recording() {
+  if (!live_->recording()) return false;
+  try {
+    const int frames = live_->stop_recording();
+    status_label_->setText(tr("Recorded about %1 frame(s)").arg(frames));
+  } catch (const std::exception& e) {
+    update_device_actions();
+    show_error(QString::fromStdString(e.what()));
+    return false;
+  }
+  update_device_actions();
+  return true;
+}
+
+void MainWindow::update_device_actions() {
+  const bool live = live_->running(), rec = live_->recording();
+  auto set = [this](const char* name, bool on) {
+    if (auto* a = findChild<QAction*>(name)) a->setEnabled(on);
+  };
+  set("startLive", !live);
+  set("stopLive", live);
+  set("record", live && !rec);
+  set("stopRecording", rec);
+}
+
+void MainWindow::set_method(Method method) {
+  const int index = method_combo_->findData(static_cast<int>(method));
+  if (method_combo_->currentIndex() != index) method_combo_->setCurrentIndex(index);  // re-enters
+  for (QAction* a : method_actions_->actions())
+    if (a->objectName() == QString("method_") + method_name(method)) a->setChecked(true);
+  if (method == method_) return;
+  method_ = method;
+  request_run(true);
+}
+
+QString MainWindow::status_text() const { return status_label_->text(); }
+
+void MainWindow::on_run_finished(const RunOutcome& outcome) {
+  last_ = outcome;
+  if (!outcome.processed) {
+    show_error(outcome.error);
+    return;
+  }
+  show_views(outcome);
+  results_->set_record(FrameRecord::from(outcome.frame_index, current_->result, outcome.method));
   const auto& r = current_->result;
   auto total = r.timings_ms.find("total");
   status_label_->setText(
-      tr("Frame %1/%2 — %3, %4 planes — pipeline %5 ms (from %6), update %7 ms")
+      tr("Frame %1/%2 — %8 — %3, %4 planes — pipeline %5 ms (from %6), update %7 ms")
           .arg(outcome.frame_index + 1)
           .arg(source_ ? source_->size() : 0)
           .arg(r.map.detected ? tr("width %1 m, height %2 m").arg(r.map.width_m, 0, 'f', 3).arg(r.map.height_m, 0, 'f', 3)
@@ -304,7 +494,8 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
           .arg(r.planes.planes.size())
           .arg(total == r.timings_ms.end() ? 0.0 : total->second, 0, 'f', 1)
           .arg(stage_name(outcome.from))
-          .arg(outcome.wall_ms, 0, 'f', 1));
+          .arg(outcome.wall_ms, 0, 'f', 1)
+          .arg(QString::fromUtf8(method_display_name(outcome.method))));
   ++shown_runs_;
   emit frameShown();
 }
@@ -452,17 +643,18 @@ void MainWindow::process_sequence() {
   cancel_button_->show();
   auto source = source_;
   const Parameters params = params_->parameters();
-  sequence_future_ = QtConcurrent::run([this, source, params, n] {
-    const Pipeline pipeline = scene::make_pipeline(*source, params);
+  const Method method = method_;
+  sequence_future_ = QtConcurrent::run([this, source, params, method, n] {
     TunnelContext context;
     for (int i = 0; i < n && !cancel_.load(); ++i) {
       FrameRecord rec;
       QString error;
       try {
-        const auto pf = scene::process_frame(*source, static_cast<std::size_t>(i), pipeline, &context);
-        rec = FrameRecord::from(i, pf.result);
+        const auto pf = process_with_method(*source, static_cast<std::size_t>(i), method, params, &context);
+        rec = FrameRecord::from(i, pf.result, method);
       } catch (const std::exception& e) {
         rec.index = i;
+        rec.method = method;
         rec.status = "error";
         error = QString::fromStdString(e.what());
       }
@@ -477,6 +669,83 @@ void MainWindow::process_sequence() {
       cancel_button_->hide();
       sequence_running_ = false;
       status_label_->setText(results_->summary_text());
+    });
+  });
+}
+
+void MainWindow::fuse_sequence() {
+  if (sequence_running_) return;
+  const Dataset* ds = source_ ? source_->dataset() : nullptr;
+  if (!ds) {
+    show_error(tr("%1: Fuse sequence needs a posed dataset (dataset.json with poses or joints)")
+                   .arg(input_path_.isEmpty() ? tr("no input") : input_path_));
+    emit fusionFinished(false);
+    return;
+  }
+  if (live_->running()) stop_live_view();
+  sequence_running_ = true;
+  cancel_.store(false);
+  progress_->setRange(0, 2 * static_cast<int>(ds->frames.size()));
+  progress_->setValue(0);
+  progress_->show();
+  cancel_button_->show();
+  status_label_->setText(tr("Fusing %1 frame(s)…").arg(ds->frames.size()));
+  auto source = source_;  // keeps the dataset alive
+  const Parameters params = params_->parameters();
+  sequence_future_ = QtConcurrent::run([this, source, params] {
+    auto fused = std::make_shared<FusedScene>();
+    QString error;
+    bool cancelled = false;
+    try {
+      *fused = build_fused_scene(*source->dataset(), params, [this](int done, int) {
+        QMetaObject::invokeMethod(this, [this, done] { progress_->setValue(done); });
+      }, cancel_);
+    } catch (const FusionCancelled&) {
+      cancelled = true;
+    } catch (const std::exception& e) {
+      error = QString::fromStdString(e.what());
+    }
+    QMetaObject::invokeMethod(this, [this, fused, error, cancelled] {
+      progress_->hide();
+      cancel_button_->hide();
+      sequence_running_ = false;
+      if (cancelled) {
+        status_label_->setText(tr("Fusion cancelled"));
+        return emit fusionFinished(false);
+      }
+      if (!error.isEmpty()) {
+        show_error(error);
+        return emit fusionFinished(false);
+      }
+      view3d_->show_geometry(fused->geometry, true);
+      // The mesh then follows the shown frame's pose like a loaded mesh PLY (world frame).
+      mesh_world_ = fused->geometry.mesh;
+      mesh_frame_ = last_.frame_index;
+      fused_frusta_ = fused->frusta;
+      fused_triangles_ = fused->triangles;
+      QStringList lines;
+      int rescan = 0;
+      for (const auto& p : fused->merged.poses) {
+        rescan += p.rescan ? 1 : 0;
+        lines << tr("Pose %1 (frames %2–%3): %4")
+                     .arg(p.group)
+                     .arg(p.frames.empty() ? -1 : p.frames.front())
+                     .arg(p.frames.empty() ? -1 : p.frames.back())
+                     .arg(QString::fromStdString(p.message));
+      }
+      results_->set_pose_status(lines);
+      const auto& m = fused->merged.map;
+      status_label_->setText(
+          tr("Fused %1 frame(s), %2 pose(s) (%3 to rescan): mesh %4 triangles; merged map %5 — fusion %6 ms, mesh %7 ms")
+              .arg(fused->frames)
+              .arg(fused->frusta)
+              .arg(rescan)
+              .arg(fused->triangles)
+              .arg(m.detected ? tr("width %1 m, height %2 m").arg(m.width_m, 0, 'f', 3).arg(m.height_m, 0, 'f', 3)
+                              : QString::fromStdString(m.status))
+              .arg(fused->fuse_ms, 0, 'f', 0)
+              .arg(fused->mesh_ms, 0, 'f', 0));
+      emit fusionFinished(true);
     });
   });
 }

@@ -14,6 +14,8 @@
 
 #include "ui/pipeline_runner.h"
 
+class QActionGroup;
+class QComboBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
@@ -22,6 +24,7 @@ class QPushButton;
 namespace tunnelmap::ui {
 
 class DepthViewWidget;
+class LiveView;
 class ParameterPanel;
 class ResultsPanel;
 class TimelineWidget;
@@ -47,6 +50,24 @@ class MainWindow : public QMainWindow {
   // into the camera frame of the shown frame when its pose is known.
   bool open_mesh(const QString& path);
   void process_sequence();                    // every frame, with progress and cancel
+  // Detection method (PG&C or a paper baseline): re-runs the shown frame when it changes.
+  void set_method(Method method);
+  Method method() const { return method_; }
+  QString status_text() const;
+
+  // OpenNI2 devices (Device menu). All return false and show the error on failure.
+  QStringList refresh_devices();                 // URIs of the connected devices
+  bool start_live_view(const QString& uri);      // "" = the device chosen in Device > Devices
+  void stop_live_view();
+  bool start_recording(const QString& path);     // .oni, while the live view runs
+  bool stop_recording();
+  LiveView* live_view() const { return live_; }
+
+  // Processing > Fuse sequence (posed datasets): TSDF mesh, merged map and one frustum per arm
+  // pose, in the world frame, on a worker thread with progress and cancel.
+  void fuse_sequence();
+  int fused_frusta() const { return fused_frusta_; }
+  long long fused_triangles() const { return fused_triangles_; }
   void cancel_sequence() { cancel_.store(true); }
 
   // For tests and --screenshot: the shown state.
@@ -71,6 +92,7 @@ class MainWindow : public QMainWindow {
  signals:
   void frameShown();  // a pipeline result reached the views
   void errorShown(const QString& message);
+  void fusionFinished(bool ok);
 
  protected:
   void closeEvent(QCloseEvent* e) override;
@@ -87,6 +109,9 @@ class MainWindow : public QMainWindow {
   QString ask_save_path(const QString& title, const QString& filter, const QString& suffix);
   QString ask_open_path(const QString& title, const QString& filter);
   void show_mesh();
+  void show_views(const RunOutcome& outcome);  // swaps the outcome into the 3D and depth views
+  void on_live_frame(const RunOutcome& outcome);
+  void update_device_actions();
 
   View3DWidget* view3d_;
   DepthViewWidget* depth_view_;
@@ -97,6 +122,12 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_;
   QPushButton* cancel_button_;
   QMenu* recent_menu_ = nullptr;
+  QMenu* devices_menu_ = nullptr;
+  QActionGroup* device_actions_ = nullptr;
+  LiveView* live_ = nullptr;
+  QComboBox* method_combo_ = nullptr;
+  QActionGroup* method_actions_ = nullptr;
+  Method method_ = Method::Pgc;
 
   PipelineRunner runner_;
   QTimer debounce_;
@@ -113,6 +144,8 @@ class MainWindow : public QMainWindow {
   QString last_error_;
   std::atomic<bool> cancel_{false};
   bool sequence_running_ = false;
+  int fused_frusta_ = 0;
+  long long fused_triangles_ = 0;
   QFuture<void> sequence_future_;
 };
 

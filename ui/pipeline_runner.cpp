@@ -4,6 +4,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <chrono>
 
+#include "core/baselines/method_runner.h"
+#include "core/util/error.h"
 #include "ui/depth_view_widget.h"
 
 namespace tunnelmap::ui {
@@ -15,6 +17,21 @@ qint64 now_ns() {
       .count();
 }
 }  // namespace
+
+scene::ProcessedFrame process_with_method(const FrameSource& source, std::size_t index, Method method,
+                                          const Parameters& params, TunnelContext* context) {
+  if (method == Method::Pgc) return scene::process_frame(source, index, scene::make_pipeline(source, params), context);
+  if (index >= source.size())
+    throw InputError(source.size() ? source.describe(0) : std::string(),
+                     "frame " + std::to_string(index) + " does not exist (the input has " +
+                         std::to_string(source.size()) + ")");
+  MethodRunner runner(method, params);
+  if (const Dataset* ds = source.dataset()) runner.set_world_up(ds->up);
+  scene::ProcessedFrame out;
+  out.frame = source.load(index);
+  runner.run(out.frame, out.result, context);
+  return out;
+}
 
 std::optional<Stage> first_changed_stage(const Parameters& a, const Parameters& b) {
   std::optional<Stage> first;
@@ -39,8 +56,8 @@ void PipelineRunner::set_source(std::shared_ptr<const FrameSource> source) {
   pending_.reset();
 }
 
-void PipelineRunner::request(int frame_index, const Parameters& params) {
-  Job job{frame_index, params, now_ns()};
+void PipelineRunner::request(int frame_index, const Parameters& params, Method method) {
+  Job job{frame_index, params, method, now_ns()};
   if (running_)
     pending_ = job;  // replaces an older pending request: only the newest counts
   else
@@ -55,7 +72,8 @@ void PipelineRunner::start(const Job& job) {
   std::shared_ptr<const scene::ProcessedFrame> base;
   vtkSmartPointer<vtkPolyData> base_cloud;
   Stage from = Stage::Cloud;
-  if (cache_ && cache_frame_ == job.frame_index) {
+  // Partial re-runs are PG&C's stages; the baselines always run the whole frame.
+  if (cache_ && cache_frame_ == job.frame_index && job.method == Method::Pgc && cache_method_ == Method::Pgc) {
     const auto changed = first_changed_stage(cache_params_, job.params);
     base = cache_;
     from = changed ? *changed : Stage::Tunnel;
@@ -66,16 +84,17 @@ void PipelineRunner::start(const Job& job) {
     RunOutcome out;
     out.frame_index = job.frame_index;
     out.params = job.params;
+    out.method = job.method;
     out.from = from;
     try {
       if (!source) throw std::runtime_error("no input open");
-      const Pipeline pipeline = scene::make_pipeline(*source, job.params);
       auto processed = std::make_shared<scene::ProcessedFrame>();
       if (base) {
+        const Pipeline pipeline = scene::make_pipeline(*source, job.params);
         *processed = *base;  // copy: the GUI may still be showing `base`
         pipeline.run(processed->frame, processed->result, nullptr, from);
       } else {
-        *processed = scene::process_frame(*source, static_cast<std::size_t>(job.frame_index), pipeline);
+        *processed = process_with_method(*source, static_cast<std::size_t>(job.frame_index), job.method, job.params);
       }
       const qint64 scene_start = now_ns();
       scene::GeometryOptions options;
@@ -102,6 +121,7 @@ void PipelineRunner::on_done() {
     cache_ = out.processed;
     cache_geometry_ = out.geometry;
     cache_params_ = out.params;
+    cache_method_ = out.method;
     cache_frame_ = out.frame_index;
   }
   if (pending_) {  // a newer request arrived: this result is stale

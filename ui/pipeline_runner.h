@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/baselines/method.h"
 #include "core/io/frame_source.h"
 #include "ui/scene/processed_frame.h"
 #include "ui/scene/scene_geometry.h"
@@ -25,6 +26,7 @@ struct RunOutcome {
   std::shared_ptr<const scene::SceneGeometry> geometry;
   QImage depth_image;
   Parameters params;
+  Method method = Method::Pgc;
   Stage from = Stage::Cloud;
   double wall_ms = 0.0;   // request to result, including queueing
   double scene_ms = 0.0;  // of which building the scene geometry and the depth image
@@ -38,7 +40,7 @@ class PipelineRunner : public QObject {
   ~PipelineRunner() override;
 
   void set_source(std::shared_ptr<const FrameSource> source);  // drops cached results
-  void request(int frame_index, const Parameters& params);
+  void request(int frame_index, const Parameters& params, Method method = Method::Pgc);
   bool busy() const { return running_; }
   int runs_started() const { return runs_started_; }
 
@@ -49,6 +51,7 @@ class PipelineRunner : public QObject {
   struct Job {
     int frame_index;
     Parameters params;
+    Method method;
     qint64 requested_ns;
   };
   void start(const Job& job);
@@ -58,12 +61,18 @@ class PipelineRunner : public QObject {
   std::shared_ptr<const scene::ProcessedFrame> cache_;  // last completed run
   std::shared_ptr<const scene::SceneGeometry> cache_geometry_;
   Parameters cache_params_;
+  Method cache_method_ = Method::Pgc;
   int cache_frame_ = -1;
   std::optional<Job> pending_;
   bool running_ = false;
   int runs_started_ = 0;
   QFutureWatcher<RunOutcome> watcher_;
 };
+
+// Loads frame `index` of `source` and runs `method` on it: PG&C through the pipeline, the
+// baselines through MethodRunner (same FrameResult). InputError on bad data.
+scene::ProcessedFrame process_with_method(const FrameSource& source, std::size_t index, Method method,
+                                          const Parameters& params, TunnelContext* context = nullptr);
 
 // The earliest stage affected by any parameter that differs between `a` and `b`; nullopt if equal.
 std::optional<Stage> first_changed_stage(const Parameters& a, const Parameters& b);

@@ -14,9 +14,9 @@ namespace tunnelmap::ui {
 ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
   auto* left = new QVBoxLayout;
-  table_ = new QTableWidget(0, 6, this);
+  table_ = new QTableWidget(0, 7, this);
   table_->setHorizontalHeaderLabels({tr("Frame"), tr("Status"), tr("Width (m)"), tr("Height (m)"),
-                                     tr("Planes"), tr("Time (ms)")});
+                                     tr("Planes"), tr("Time (ms)"), tr("Method")});
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -25,6 +25,11 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   summary_->setObjectName("summary");
   left->addWidget(table_, 1);
   left->addWidget(summary_);
+  poses_ = new QLabel(this);
+  poses_->setObjectName("poseStatus");
+  poses_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  poses_->hide();
+  left->addWidget(poses_);
   plot_ = new ResultsPlot(this);
   layout->addLayout(left, 3);
   layout->addWidget(plot_, 2);
@@ -51,6 +56,13 @@ void ResultsPanel::set_record(const FrameRecord& record) {
   refresh();
 }
 
+void ResultsPanel::set_pose_status(const QStringList& lines) {
+  poses_->setText(lines.join('\n'));
+  poses_->setVisible(!lines.isEmpty());
+}
+
+QString ResultsPanel::pose_status_text() const { return poses_->text(); }
+
 QString ResultsPanel::summary_text() const {
   const RunningStats s = running_stats(records_);
   if (s.detected == 0) return tr("%1 frame(s), no tunnel detected").arg(s.frames);
@@ -72,7 +84,8 @@ void ResultsPanel::refresh() {
                                r.detected ? QString::number(r.width_m, 'f', 3) : "–",
                                r.detected ? QString::number(r.height_m, 'f', 3) : "–",
                                QString::number(r.planes),
-                               t == r.timings_ms.end() ? "–" : QString::number(t->second, 'f', 1)};
+                               t == r.timings_ms.end() ? "–" : QString::number(t->second, 'f', 1),
+                               QString::fromUtf8(method_display_name(r.method))};
     for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));
   }
   summary_->setText(summary_text());

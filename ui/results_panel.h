@@ -22,6 +22,9 @@ class ResultsPanel : public QWidget {
   void set_record(const FrameRecord& record);  // adds or replaces the row of record.index
   const std::vector<FrameRecord>& records() const { return records_; }
   QString summary_text() const;
+  // Fusion: one line per arm pose ("ok" or "move and rescan: …"); empty hides the list.
+  void set_pose_status(const QStringList& lines);
+  QString pose_status_text() const;
 
  signals:
   void frameActivated(int index);
@@ -32,6 +35,7 @@ class ResultsPanel : public QWidget {
   std::vector<FrameRecord> records_;  // sorted by index
   QTableWidget* table_;
   QLabel* summary_;
+  QLabel* poses_;
   ResultsPlot* plot_;
 };
 

@@ -1,5 +1,6 @@
 // tunnelmap: the inspection GUI.
-//   tunnelmap [INPUT] [--params FILE] [--frame N] [--view V] [--size WxH] [--screenshot FILE --exit]
+//   tunnelmap [INPUT] [--params FILE] [--method pgc|ransac|qhull] [--frame N] [--view V] [--size WxH]
+//             [--screenshot FILE --exit]
 // With --screenshot the window is grabbed once the first frame is processed; with --exit the
 // program then quits (exit 0, or 3 when the input or the screenshot failed).
 #include <QApplication>
@@ -9,6 +10,8 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <iostream>
 
+#include "core/baselines/method.h"
+#include "sensors/openni/register_openni.h"
 #include "ui/main_window.h"
 #include "ui/view3d_widget.h"
 
@@ -30,8 +33,10 @@ int main(int argc, char** argv) {
   QCommandLineOption size_opt("size", "Window size WIDTHxHEIGHT", "SIZE", "1400x860");
   QCommandLineOption view_opt("view", "Camera: along, side, top", "VIEW", "along");
   QCommandLineOption frame_opt("frame", "Show frame N of a sequence (0 = first)", "N", "0");
-  cli.addOptions({params_opt, shot_opt, exit_opt, size_opt, view_opt, frame_opt});
+  QCommandLineOption method_opt("method", "Detection method: pgc (PG&C), ransac (R&L) or qhull", "METHOD", "pgc");
+  cli.addOptions({params_opt, shot_opt, exit_opt, size_opt, view_opt, frame_opt, method_opt});
   cli.process(app);
+  tunnelmap::openni2::register_openni_inputs();  // INPUT / File > Open may be an .oni recording
 
   tunnelmap::ui::MainWindow window;
   const bool batch = cli.isSet(exit_opt);
@@ -48,6 +53,11 @@ int main(int argc, char** argv) {
     if (batch) QTimer::singleShot(0, &app, [&] { app.exit(exit_code); });
   };
   if (cli.isSet(params_opt) && !window.load_preset(cli.value(params_opt))) fail(window.last_error());
+  try {
+    window.set_method(tunnelmap::parse_method(cli.value(method_opt).toStdString()));
+  } catch (const std::exception& e) {
+    fail(QString("--method: %1").arg(e.what()));
+  }
 
   const QString shot = cli.value(shot_opt);
   if (!shot.isEmpty()) {

@@ -19,11 +19,16 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "sensors/openni/register_openni.h"
+#include "ui/live_view.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/parameter_row.h"
 #include "ui/view3d_widget.h"
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QTableWidget>
+#include "ui/results_panel.h"
 #include <vtkRenderWindow.h>
 
 using tunnelmap::ui::MainWindow;
@@ -221,6 +226,134 @@ class GuiTest : public QObject {
     QVERIFY(w.last_error().contains("results.csv"));
   }
 
+  // Method selector: switching the combo to Qhull re-runs the frame with the convex-hull baseline;
+  // status bar and results table name it and the width differs from PG&C's.
+  void methodSelectorSwitchesToQhull() {
+    MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    QVERIFY(w.open_input(sample_));
+    QVERIFY(wait_frame(w));
+    QVERIFY(w.current()->result.map.detected);
+    const double pgc_width = w.current()->result.map.width_m;
+    QVERIFY2(w.status_text().contains("PG&C"), qPrintable(w.status_text()));
+    auto* combo = w.findChild<QComboBox*>("methodCombo");
+    QVERIFY(combo);
+    const int qhull = combo->findText("Qhull");
+    QVERIFY(qhull >= 0);
+    combo->setCurrentIndex(qhull);
+    QVERIFY(wait_frame(w));
+    QCOMPARE(int(w.method()), int(tunnelmap::Method::Qhull));
+    QCOMPARE(int(w.last_outcome().method), int(tunnelmap::Method::Qhull));
+    QCOMPARE(int(w.last_outcome().from), int(tunnelmap::Stage::Cloud));  // a whole run
+    QVERIFY2(w.status_text().contains("Qhull"), qPrintable(w.status_text()));
+    QVERIFY(w.current()->result.map.detected);
+    const double qhull_width = w.current()->result.map.width_m;
+    qInfo("lab frame 0 width: PG&C %.4f m, Qhull %.4f m", pgc_width, qhull_width);
+    QVERIFY2(std::abs(qhull_width - pgc_width) > 0.005, qPrintable(QString::number(qhull_width)));
+    QCOMPARE(int(w.results_panel()->records().size()), 1);
+    QCOMPARE(int(w.results_panel()->records()[0].method), int(tunnelmap::Method::Qhull));
+    auto* table = w.results_panel()->findChild<QTableWidget*>();
+    QVERIFY(table);
+    QCOMPARE(table->item(0, 6)->text(), QString("Qhull"));
+    // The Processing > Method menu follows the combo, and switches back.
+    auto* qhull_action = w.findChild<QAction*>("method_qhull");
+    QVERIFY(qhull_action && qhull_action->isChecked());
+    w.findChild<QAction*>("method_pgc")->trigger();
+    QVERIFY(wait_frame(w));
+    QCOMPARE(combo->currentText(), QString("PG&C"));
+    QVERIFY(std::abs(w.current()->result.map.width_m - pgc_width) < 1e-9);
+  }
+
+  // Device menu on the simulated OpenNI2 camera: the device is listed, the live view processes
+  // the newest frames for ~1 s (fps and latency in the status bar), 10+ frames are recorded to
+  // an .oni file through the Record… action, which then opens as an input.
+  void liveViewAndRecordingOnSimulatedDevice() {
+    MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    const QStringList devices = w.refresh_devices();
+    QVERIFY2(devices.contains("tunnelmap-sim://lab"), qPrintable(devices.join(", ")));
+    QVERIFY2(w.start_live_view("tunnelmap-sim://lab?frames=3"), qPrintable(w.last_error()));
+    QVERIFY(w.live_view()->running());
+    QVERIFY(!w.findChild<QAction*>("startLive")->isEnabled());
+    QVERIFY(wait_frame(w, 30000));  // the device renders its 3-frame cycle first
+    QElapsedTimer live;
+    live.start();
+    while (live.elapsed() < 1000) QTest::qWait(50);
+    const auto st = w.live_view()->stats();
+    qInfo("live view ~1 s: %d frames shown, %d detected, %llu received, %llu dropped, %.1f fps, latency %.0f ms",
+          st.shown, st.detected, (unsigned long long)st.received, (unsigned long long)st.dropped, st.fps,
+          st.latency_ms);
+    QVERIFY(st.shown >= 3);
+    QVERIFY(st.detected >= st.shown - 1);
+    QVERIFY(st.received >= std::uint64_t(st.shown));
+    QVERIFY(st.latency_ms > 0);
+    QVERIFY2(w.status_text().contains("fps") && w.status_text().contains("latency"), qPrintable(w.status_text()));
+    QVERIFY(w.current()->frame.width == 640);
+
+    // Record… through the real action (save dialog replaced), 10 frames, Stop recording.
+    const QString oni = dir_.filePath("live.oni");
+    w.choose_save_path = [&](const QString&, const QString&, const QString&) { return oni; };
+    w.findChild<QAction*>("record")->trigger();
+    QVERIFY2(w.live_view()->recording(), qPrintable(w.last_error()));
+    QElapsedTimer rec;
+    rec.start();
+    while (w.live_view()->frames_recorded() < 10 && rec.elapsed() < 10000) QTest::qWait(20);
+    QVERIFY(w.live_view()->frames_recorded() >= 10);
+    w.findChild<QAction*>("stopRecording")->trigger();
+    QVERIFY(!w.live_view()->recording());
+    w.findChild<QAction*>("stopLive")->trigger();
+    QVERIFY(!w.live_view()->running());
+    QVERIFY(QFileInfo(oni).size() > 0);
+
+    // The recording opens like any input (File > Open accepts .oni).
+    QVERIFY2(w.open_input(oni), qPrintable(w.last_error()));
+    QVERIFY(wait_frame(w));
+    QVERIFY(w.current()->frame.width == 640);
+    QVERIFY2(w.status_text().contains("Frame 1/"), qPrintable(w.status_text()));
+    const int frames = w.status_text().section('/', 1, 1).section(' ', 0, 0).toInt();
+    qInfo("recording: %d frames, %lld bytes", frames, (long long)QFileInfo(oni).size());
+    QVERIFY(frames >= 10);
+  }
+
+  // Processing > Fuse sequence on the simulated (posed) lab dataset: the mesh layer gets the
+  // TSDF mesh, the frustum layer one frustum per arm pose, the results panel lists the poses.
+  void fuseSequenceShowsMeshMapAndFrusta() {
+    MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    QVERIFY(w.open_input(sample_));
+    QVERIFY(wait_frame(w));
+    const vtkIdType one_frustum = w.view3d()->scene().layer_size(tunnelmap::scene::Layer::Frustum);
+    QVERIFY(one_frustum > 0);
+    QSignalSpy done(&w, &MainWindow::fusionFinished);
+    // Cancel at once: stops at the first frame, nothing shown.
+    w.findChild<QAction*>("fuseSequence")->trigger();
+    w.cancel_sequence();
+    QVERIFY(done.wait(60000));
+    QCOMPARE(done.takeFirst().at(0).toBool(), false);
+    QVERIFY2(w.status_text().contains("cancelled"), qPrintable(w.status_text()));
+    QCOMPARE(w.fused_frusta(), 0);
+    QCOMPARE(w.view3d()->scene().layer_size(tunnelmap::scene::Layer::Frustum), one_frustum);
+
+    w.findChild<QAction*>("fuseSequence")->trigger();
+    QVERIFY(done.wait(60000));
+    QVERIFY2(done.takeFirst().at(0).toBool(), qPrintable(w.last_error()));
+    const auto& scene = w.view3d()->scene();
+    const vtkIdType triangles = scene.layer_size(tunnelmap::scene::Layer::Mesh);
+    qInfo("fused: %lld triangles, %d frusta; %s", (long long)triangles, w.fused_frusta(), qPrintable(w.status_text()));
+    QVERIFY(triangles > 1000);
+    QCOMPARE((long long)triangles, w.fused_triangles());
+    QCOMPARE(w.fused_frusta(), 2);  // the simulated lab dataset has one arm pose per frame
+    QCOMPARE(scene.layer_size(tunnelmap::scene::Layer::Frustum), one_frustum * w.fused_frusta());
+    QVERIFY(scene.layer_size(tunnelmap::scene::Layer::Boundary) > 0);  // merged map, world frame
+    const QString poses = w.results_panel()->pose_status_text();
+    QCOMPARE(poses.count("Pose "), 2);
+    QVERIFY2(poses.contains("ok"), qPrintable(poses));
+    // A dataset without poses: an error naming the input, nothing changes.
+  }
+
   void corruptFileShowsErrorAndKeepsState() {
     MainWindow w;
     w.suppress_dialogs = true;
@@ -249,6 +382,7 @@ int main(int argc, char** argv) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);
   QApplication::setOrganizationName("TunnelMapTest");
+  tunnelmap::openni2::register_openni_inputs();
   GuiTest test;
   return QTest::qExec(&test, argc, argv);
 }
