@@ -15,6 +15,11 @@ out=$(mktemp -d)
   --json "$out/r.json" --ply "$out/map.ply"
 test -s "$out/r.json" && test -s "$out/map.ply"
 grep -q '"detected": 3' "$out/r.json"
+# The simulated-camera driver sits where the system's OpenNI2 finds it: the installed CLI lists
+# it and detects the tunnel live, with no LD_LIBRARY_PATH.
+/usr/bin/tunnelmap-cli devices | grep -q '^tunnelmap-sim://lab'
+/usr/bin/tunnelmap-cli detect --device 'tunnelmap-sim://lab?frames=3' --frames 5 \
+  --params /usr/share/tunnelmap/presets/lab.json | grep -q 'summary: 5/5 frames detected'
 test -x /usr/bin/tunnelmap && test -f /usr/share/applications/tunnelmap.desktop
 test -f /usr/share/icons/hicolor/scalable/apps/tunnelmap.svg && test -f /usr/share/mime/packages/tunnelmap.xml
 if command -v man >/dev/null; then test -f /usr/share/man/man1/tunnelmap-cli.1.gz; fi
