@@ -24,6 +24,18 @@ struct DepthFrame {
   double timestamp_s = 0.0;
   std::string source;                     // file or stream this frame came from (for messages)
 
+  // An all-invalid frame of the intrinsics' size, in millimetres (what sensors and the
+  // simulator produce before filling in depth).
+  static DepthFrame blank_mm(const Intrinsics& K) {
+    DepthFrame f;
+    f.width = K.width;
+    f.height = K.height;
+    f.intrinsics = K;
+    f.depth_units_per_m = 1000.0;
+    f.depth.assign(static_cast<std::size_t>(K.width) * K.height, 0.0f);
+    return f;
+  }
+
   bool empty() const { return width <= 0 || height <= 0 || depth.empty(); }
   bool has_rgb() const { return rgb.size() == static_cast<std::size_t>(width) * height * 3; }
   float depth_m(int u, int v) const {

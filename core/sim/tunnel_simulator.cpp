@@ -115,12 +115,8 @@ Eigen::Isometry3d TunnelSimulator::wanted_pose(int index) const {
 SimFrame TunnelSimulator::render(int index) const {
   const Intrinsics K = Intrinsics::primesense_vga();
   SimFrame out;
+  out.frame = DepthFrame::blank_mm(K);
   DepthFrame& f = out.frame;
-  f.width = K.width;
-  f.height = K.height;
-  f.intrinsics = K;
-  f.depth_units_per_m = 1000.0;
-  f.depth.assign(static_cast<std::size_t>(K.width) * K.height, 0.0f);
   f.rgb.assign(static_cast<std::size_t>(K.width) * K.height * 3, 0);
   out.arm = arm_state(index);
   const Eigen::Isometry3d T = out.arm ? out.arm->true_pose : pose(index);

@@ -9,12 +9,8 @@ SyntheticFrame render_planes(const std::vector<AnalyticPlane>& planes, const Eig
                              const Eigen::Vector3d& bmin, const Eigen::Vector3d& bmax,
                              double noise_m, unsigned seed, const Intrinsics& K) {
   SyntheticFrame out;
+  out.frame = DepthFrame::blank_mm(K);
   DepthFrame& f = out.frame;
-  f.width = K.width;
-  f.height = K.height;
-  f.intrinsics = K;
-  f.depth_units_per_m = 1000.0;
-  f.depth.assign(static_cast<std::size_t>(K.width) * K.height, 0.0f);
   f.pose = pose;
   f.source = "synthetic";
   out.plane_id.assign(f.depth.size(), -1);
