@@ -100,7 +100,9 @@ TEST(RansacLse, LabelsOnlyTheSampledPixels) {
   const RansacLseResult r = ransac_lse_planes(cloud_of(f.frame), quick_ransac());
   for (int v = 0; v < r.planes.height; ++v)
     for (int u = 0; u < r.planes.width; ++u)
-      if (u % 4 || v % 4) ASSERT_EQ(r.planes.labels[v * r.planes.width + u], 0) << u << "," << v;
+      if (u % 4 || v % 4) {
+        ASSERT_EQ(r.planes.labels[v * r.planes.width + u], 0) << u << "," << v;
+      }
 }
 
 TEST(RansacLse, RejectsBadOptions) {

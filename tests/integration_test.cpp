@@ -19,13 +19,14 @@ struct SequenceScore {
   double width_std_mm = 0, height_std_mm = 0;
 };
 
-SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames) {
+SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames, int grid_step = 1) {
   SimConfig config = SimConfig::from_preset(preset);
   config.seed = seed;
   config.frames = frames;
   const TunnelSimulator sim(config);
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
+  params.set("grow.grid_step", grid_step);
   Pipeline pipeline(params);
   pipeline.set_world_up(Eigen::Vector3d::UnitZ());
   TunnelContext context;
@@ -47,8 +48,8 @@ SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames)
   s.height_err_mm = summary.height_abs_error_mean_m * 1000;
   s.width_std_mm = summary.width_std_m * 1000;
   s.height_std_mm = summary.height_std_m * 1000;
-  std::printf("%s seed %u: %d/%d detected, |error| w %.2f h %.2f mm, sigma w %.2f h %.2f mm\n",
-              preset.c_str(), seed, s.detected, s.frames, s.width_err_mm, s.height_err_mm,
+  std::printf("%s seed %u grid step %d: %d/%d detected, |error| w %.2f h %.2f mm, sigma w %.2f h %.2f mm\n",
+              preset.c_str(), seed, grid_step, s.detected, s.frames, s.width_err_mm, s.height_err_mm,
               s.width_std_mm, s.height_std_mm);
   return s;
 }
@@ -66,6 +67,25 @@ TEST(Integration, LabSequenceMeetsThePapersLabAccuracy) {
 
 TEST(Integration, FieldSequenceMeetsThePapersLabAccuracy) {
   const SequenceScore s = run_sequence("field", 12, 30);  // 5 m, 3 m, 1.8 m from the manhole
+  EXPECT_EQ(s.detected, s.frames);
+  EXPECT_LE(s.width_err_mm, 10.0);
+  EXPECT_LE(s.height_err_mm, 10.0);
+  EXPECT_LE(s.width_std_mm, 4.0);
+  EXPECT_LE(s.height_std_mm, 4.0);
+}
+
+// Issue 7: the coarse-to-fine fast path keeps the core issue's accuracy bounds.
+TEST(Integration, FastPathLabSequenceKeepsTheAccuracyBounds) {
+  const SequenceScore s = run_sequence("lab", 11, 30, 2);
+  EXPECT_EQ(s.detected, s.frames);
+  EXPECT_LE(s.width_err_mm, 10.0);
+  EXPECT_LE(s.height_err_mm, 10.0);
+  EXPECT_LE(s.width_std_mm, 4.0);
+  EXPECT_LE(s.height_std_mm, 4.0);
+}
+
+TEST(Integration, FastPathFieldSequenceKeepsTheAccuracyBounds) {
+  const SequenceScore s = run_sequence("field", 12, 30, 2);
   EXPECT_EQ(s.detected, s.frames);
   EXPECT_LE(s.width_err_mm, 10.0);
   EXPECT_LE(s.height_err_mm, 10.0);

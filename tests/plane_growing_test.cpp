@@ -23,6 +23,16 @@ PlaneSegments run_pgc(const DepthFrame& frame, const GrowOptions& opt = {}) {
   estimate_normals(NormalOptions{}, cloud);
   return extract_planes(cloud, opt);
 }
+
+// The growing tests hold for the paper's every-pixel growing (grid step 1) and for the
+// coarse-to-fine fast path (grid step 2: grow on every other pixel, assign the rest).
+class PlaneGrowing : public ::testing::TestWithParam<int> {
+ protected:
+  PlaneSegments pgc(const DepthFrame& frame, GrowOptions opt = {}) const {
+    opt.grid_step = GetParam();
+    return run_pgc(frame, opt);
+  }
+};
 }  // namespace
 
 TEST(PlaneModel, IncrementalUpdateEqualsBatchMean) {
@@ -60,12 +70,12 @@ TEST(PlaneModel, LeastSquaresNormalOfNoisyPlane) {
   EXPECT_NEAR(rms, 0.002, 0.0002);
 }
 
-TEST(PlaneGrowing, BoxRoomGivesOnePlanePerVisibleFace) {
+TEST_P(PlaneGrowing, BoxRoomGivesOnePlanePerVisibleFace) {
   const Eigen::Vector3d mn(-1.5, -1.2, -1.0), mx(1.5, 1.2, 1.4);
   const auto planes = box_room(mn, mx);
   const auto pose = look_at({-0.6, 0.4, 0.3}, {1.5, -1.2, -1.0});
   const auto s = render_planes(planes, pose, mn, mx, 0.001, 11);
-  const PlaneSegments seg = run_pgc(s.frame);
+  const PlaneSegments seg = pgc(s.frame);
 
   // Visible faces with a reasonable number of pixels.
   std::vector<int> face_pixels(planes.size(), 0);
@@ -98,11 +108,11 @@ TEST(PlaneGrowing, BoxRoomGivesOnePlanePerVisibleFace) {
   EXPECT_GE(visible, 3);
 }
 
-TEST(PlaneGrowing, AreaOfAFrontoParallelSquareMatchesGeometry) {
+TEST_P(PlaneGrowing, AreaOfAFrontoParallelSquareMatchesGeometry) {
   // A 1 m x 1 m square 2 m in front of the camera.
   const std::vector<AnalyticPlane> planes = {{Eigen::Vector3d(0, 0, -1), 2.0}};
   const auto s = render_planes(planes, Eigen::Isometry3d::Identity(), {-0.5, -0.5, 1.9}, {0.5, 0.5, 2.1});
-  const PlaneSegments seg = run_pgc(s.frame);
+  const PlaneSegments seg = pgc(s.frame);
   ASSERT_EQ(seg.planes.size(), 1u);
   EXPECT_NEAR(seg.planes[0].area_m2, 1.0, 0.02);
   // Its contour is the square's outline (about 4 vertices after simplification).
@@ -111,32 +121,34 @@ TEST(PlaneGrowing, AreaOfAFrontoParallelSquareMatchesGeometry) {
   EXPECT_NEAR(max_abs, 0.5, 0.01);
 }
 
-TEST(PlaneGrowing, LabelImageAgreesWithPlanes) {
+TEST_P(PlaneGrowing, LabelImageAgreesWithPlanes) {
   const Eigen::Vector3d mn(-1.5, -1.2, -1.0), mx(1.5, 1.2, 1.4);
   const auto s = render_planes(box_room(mn, mx), look_at({0, 0, 0}, {1.5, -1.2, -1.0}), mn, mx, 0.001);
-  const PlaneSegments seg = run_pgc(s.frame);
-  std::vector<int> counts(seg.planes.size() + 1, 0);
+  const PlaneSegments seg = pgc(s.frame);
+  int max_id = 0;
+  for (const PlaneSegment& p : seg.planes) max_id = std::max(max_id, p.id);
+  std::vector<int> counts(max_id + 1, 0);
   for (int l : seg.labels) {
     ASSERT_GE(l, 0);
-    ASSERT_LE(l, static_cast<int>(seg.planes.size()));
+    ASSERT_LE(l, max_id);
     ++counts[l];
   }
   for (const PlaneSegment& p : seg.planes) EXPECT_EQ(counts[p.id], p.points);
 }
 
-TEST(PlaneGrowing, MinPointsAndMinAreaRejectSmallRegions) {
+TEST_P(PlaneGrowing, MinPointsAndMinAreaRejectSmallRegions) {
   const std::vector<AnalyticPlane> planes = {{Eigen::Vector3d(0, 0, -1), 2.0}};
   // A 6 cm square: about 17 x 17 pixels, 0.0036 m2 < 0.004 m2.
   const auto s = render_planes(planes, Eigen::Isometry3d::Identity(), {-0.03, -0.03, 1.9}, {0.03, 0.03, 2.1});
   GrowOptions opt;
   opt.min_points = 3;
-  EXPECT_EQ(run_pgc(s.frame, opt).planes.size(), 0u);
+  EXPECT_EQ(pgc(s.frame, opt).planes.size(), 0u);
   opt.min_area_m2 = 0.001;
   opt.min_points = 100000;
-  EXPECT_EQ(run_pgc(s.frame, opt).planes.size(), 0u);
+  EXPECT_EQ(pgc(s.frame, opt).planes.size(), 0u);
 }
 
-TEST(PlaneGrowing, AngleThresholdSeparatesACrease) {
+TEST_P(PlaneGrowing, AngleThresholdSeparatesACrease) {
   // Two planes meeting at a 6 degree crease: lambda = 4 deg keeps them apart, 10 deg merges.
   const double a = 3.0 * M_PI / 180.0;
   const std::vector<AnalyticPlane> planes = {{Eigen::Vector3d(std::sin(a), 0, -std::cos(a)), 2.0 * std::cos(a)},
@@ -151,11 +163,41 @@ TEST(PlaneGrowing, AngleThresholdSeparatesACrease) {
   GrowOptions loose;
   loose.angle_deg = 12.0;
   loose.distance_m = 0.2;
-  const auto s = run_pgc(left.frame, strict);
-  const auto l = run_pgc(left.frame, loose);
+  const auto s = pgc(left.frame, strict);
+  const auto l = pgc(left.frame, loose);
   int big_strict = 0, big_loose = 0;
   for (const auto& p : s.planes) big_strict += p.points > 50000;
   for (const auto& p : l.planes) big_loose += p.points > 200000;
   EXPECT_EQ(big_strict, 2);
   EXPECT_EQ(big_loose, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(GridStep, PlaneGrowing, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           return "step" + std::to_string(info.param);
+                         });
+
+TEST(PlaneGrowingFastPath, GridStepTwoFindsThePlanesOfTheFullGrowing) {
+  // Same frame, both paths: every large plane of the exact growing has a counterpart on the
+  // coarse grid with the same orientation and offset and nearly the same pixel count.
+  const Eigen::Vector3d mn(-1.5, -1.2, -1.0), mx(1.5, 1.2, 1.4);
+  const auto s = render_planes(box_room(mn, mx), look_at({-0.6, 0.4, 0.3}, {1.5, -1.2, -1.0}), mn, mx, 0.001, 5);
+  GrowOptions fast;
+  fast.grid_step = 2;
+  const PlaneSegments exact = run_pgc(s.frame), coarse = run_pgc(s.frame, fast);
+  int compared = 0;
+  for (const PlaneSegment& e : exact.planes) {
+    if (e.points < 5000) continue;
+    ++compared;
+    const PlaneSegment* best = nullptr;
+    for (const PlaneSegment& c : coarse.planes)
+      if (!best || std::abs(c.points - e.points) < std::abs(best->points - e.points))
+        if (angle_deg(c.normal, e.normal) < 1.0) best = &c;
+    ASSERT_NE(best, nullptr) << "plane " << e.id;
+    EXPECT_LT(angle_deg(best->normal, e.normal), 0.2);
+    EXPECT_NEAR(best->offset_m, e.offset_m, 0.001);
+    EXPECT_NEAR(best->points, e.points, 0.03 * e.points);
+    EXPECT_NEAR(best->area_m2, e.area_m2, 0.03 * e.area_m2);
+  }
+  EXPECT_GE(compared, 3);
 }

@@ -17,7 +17,8 @@ void build_cloud(const DepthFrame& frame, const CloudOptions& options, Organized
   const float zmin = static_cast<float>(options.min_range_m);
   const float zmax = static_cast<float>(options.max_range_m);
   // Precomputed per-column / per-row ray factors: x = (u - cx) / fx * z.
-  std::vector<float> kx(w), ky(h);
+  thread_local std::vector<float> kx, ky;  // reused: no allocation per frame
+  kx.resize(w), ky.resize(h);
   for (int u = 0; u < w; ++u) kx[u] = static_cast<float>((u - frame.intrinsics.cx) / frame.intrinsics.fx);
   for (int v = 0; v < h; ++v) ky[v] = static_cast<float>((v - frame.intrinsics.cy) / frame.intrinsics.fy);
   for (int v = 0; v < h; ++v) {

@@ -40,6 +40,9 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Smallest allowable plane area (paper: 0.004 m2)"},
     {"grow.refit_normal", "", 1, 0, 1, 1, true, Stage::Planes, "Refit normal (PCA)",
      "1: report each plane's least-squares normal from its points; 0: the grown mean normal (eq. 3)"},
+    {"grow.grid_step", "px", 1, 1, 4, 1, true, Stage::Planes, "Growing grid step",
+     "1: grow over every pixel (the paper); k > 1: grow on every k-th pixel and row, then assign each "
+     "remaining pixel to a neighbouring sample's plane by the same distance and angle tests (faster)"},
     {"tunnel.class_angle_deg", "deg", 35.0, 5.0, 45.0, 1.0, false, Stage::Tunnel, "Class cone",
      "A plane joins a wall class when its normal is within this angle of that class's direction"},
     {"tunnel.outlier_bin_deg", "deg", 1.0, 0.1, 10.0, 0.1, false, Stage::Tunnel, "Histogram bin",

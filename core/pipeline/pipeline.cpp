@@ -27,6 +27,7 @@ GrowOptions grow_options(const Parameters& p) {
   o.min_points = p.get_int("grow.min_points");
   o.min_area_m2 = p.get("grow.min_area_m2");
   o.refit_normal = p.get_int("grow.refit_normal") != 0;
+  o.grid_step = p.get_int("grow.grid_step");
   return o;
 }
 
@@ -55,27 +56,38 @@ Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world
   return -Eigen::Vector3d::UnitY();  // image-up: camera y points down the image
 }
 
-Pipeline::Pipeline(Parameters params) : params_(std::move(params)) {}
+Pipeline::Pipeline(Parameters params) : params_(std::move(params)) { derive_options(); }
+
+void Pipeline::set_params(const Parameters& params) {
+  params_ = params;
+  derive_options();
+}
+
+void Pipeline::derive_options() {
+  cloud_ = cloud_options(params_);
+  normals_ = normal_options(params_);
+  grow_ = grow_options(params_);
+  tunnel_ = tunnel_options(params_);
+}
 
 void Pipeline::run(const DepthFrame& frame, FrameResult& result, TunnelContext* context,
                    Stage from) const {
   const auto start = std::chrono::steady_clock::now();
   if (from <= Stage::Cloud) {
-    result.cloud.timings_ms.clear();
+    reset_timings(result.cloud.timings_ms);
     StageTimer t(result.cloud.timings_ms, "cloud");
-    build_cloud(frame, cloud_options(params_), result.cloud);
+    build_cloud(frame, cloud_, result.cloud);
   }
   if (from <= Stage::Normals) {
-    result.cloud.timings_ms.erase("normals");
-    estimate_normals(normal_options(params_), result.cloud);
+    result.cloud.timings_ms["normals"] = 0.0;
+    estimate_normals(normals_, result.cloud);
   }
-  if (from <= Stage::Planes) result.planes = extract_planes(result.cloud, grow_options(params_));
+  if (from <= Stage::Planes) extract_planes(result.cloud, grow_, result.planes);
   result.map = detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_),
-                             tunnel_options(params_), context);
+                             tunnel_, context);
   if (context && result.map.detected) context->accept(result.map);
 
-  StageTimings& t = result.timings_ms;
-  t.clear();
+  StageTimings& t = result.timings_ms;  // the same five keys every run: no allocation
   t["cloud"] = result.cloud.timings_ms.count("cloud") ? result.cloud.timings_ms.at("cloud") : 0.0;
   t["normals"] = result.cloud.timings_ms.count("normals") ? result.cloud.timings_ms.at("normals") : 0.0;
   t["planes"] = result.planes.timings_ms.count("planes") ? result.planes.timings_ms.at("planes") : 0.0;

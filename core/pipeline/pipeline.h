@@ -39,7 +39,7 @@ class Pipeline {
   explicit Pipeline(Parameters params = Parameters());
 
   const Parameters& params() const { return params_; }
-  void set_params(const Parameters& params) { params_ = params; }
+  void set_params(const Parameters& params);
   void set_world_up(const Eigen::Vector3d& up) { world_up_ = up.normalized(); }
   void set_camera_up(const std::optional<Eigen::Vector3d>& up) { camera_up_ = up; }
 
@@ -54,7 +54,14 @@ class Pipeline {
   }
 
  private:
+  // The stage options derived from params_ once, not per frame (parameter lookups allocate).
+  void derive_options();
+
   Parameters params_;
+  CloudOptions cloud_;
+  NormalOptions normals_;
+  GrowOptions grow_;
+  TunnelOptions tunnel_;
   Eigen::Vector3d world_up_ = Eigen::Vector3d::UnitZ();
   std::optional<Eigen::Vector3d> camera_up_;
 };

@@ -13,9 +13,12 @@ struct GrowOptions {
   int min_points = 40;
   double min_area_m2 = 0.004;
   bool refit_normal = true;             // report the least-squares normal of the grown points
+  int grid_step = 1;                    // grow on every k-th pixel, then assign the rest (1 = every pixel)
   bool compute_contours = true;
 };
 
 PlaneSegments extract_planes(const OrganizedCloud& cloud, const GrowOptions& options);
+// The same into `out`, reusing its buffers (no allocation per frame in the steady state).
+void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out);
 
 }  // namespace tunnelmap

@@ -25,6 +25,8 @@ class PlaneModel {
   }
 
   long count() const { return count_; }
+  const Eigen::Vector3d& sum_point() const { return sum_p_; }    // N p*_N
+  const Eigen::Vector3d& sum_normal() const { return sum_n_; }   // N n*_N
   Eigen::Vector3d mean_point() const { return sum_p_ / static_cast<double>(count_); }    // p*
   Eigen::Vector3d mean_normal() const { return sum_n_ / static_cast<double>(count_); }   // n*, not unit
   double sum_z_cubed() const { return sum_z3_; }

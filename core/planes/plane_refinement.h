@@ -1,0 +1,26 @@
+#pragma once
+// Coarse-to-fine PG&C (issue 7's fast path): the planes are grown on every `step`-th pixel of
+// every `step`-th row, then each full-resolution pixel is assigned to the plane of a nearby
+// grown sample if it passes the same eq. 2 tests (point-to-plane distance epsilon and normal
+// angle lambda) against that plane's final model.
+#include <cstdint>
+#include <vector>
+
+#include "core/frame/organized_cloud.h"
+#include "core/planes/plane_segment.h"
+
+namespace tunnelmap {
+
+struct GrowOptions;
+
+// Samples pixel (step*cu, step*cv) of `full` into `coarse` (intrinsics scaled accordingly).
+void subsample_cloud(const OrganizedCloud& full, int step, OrganizedCloud& coarse);
+
+// `planes` holds the planes grown on the `step` grid with their coarse label image; on return
+// its labels are full resolution and each plane's points, area and bounding box are counted
+// at full resolution. Centroid, normals and RMS stay those of the grown samples (an unbiased
+// subsample of the same surface).
+void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
+                               PlaneSegments& planes);
+
+}  // namespace tunnelmap
