@@ -19,7 +19,7 @@ DepthFrame real_frame(const std::string& file, double fx, double fy, double cx, 
 NamedFrame simulated(const std::string& name, const SimConfig& config) {
   const TunnelSimulator sim(config);
   SimFrame s = sim.render(0);
-  NamedFrame nf{name, std::move(s.frame), true, {}};
+  NamedFrame nf{name, std::move(s.frame), true, {}, s.surface_id};
   const Eigen::Matrix3f to_camera = nf.frame.pose->linear().transpose().cast<float>();
   const float nan = std::numeric_limits<float>::quiet_NaN();
   nf.true_normals.assign(s.surface_id.size(), Eigen::Vector3f(nan, nan, nan));
@@ -41,9 +41,9 @@ const std::vector<NamedFrame>& bench_frames() {
     field.distance_to_manhole_m = 3.0;
     f.push_back(simulated("sim_field_3m", field));
     // Intrinsics from resources/real-frames/SOURCES.md.
-    f.push_back({"real_cape_tunnel", real_frame("cape_tunnel_depth.png", 575.927, 576.408, 315.150, 230.586), false});
-    f.push_back({"real_pcl_office", real_frame("pcl_office_depth.png", 525, 525, 320, 240), false});
-    f.push_back({"real_rtabmap_lab", real_frame("rtabmap_lab_depth_17.png", 525, 525, 319.5, 239.5), false});
+    f.push_back({"real_cape_tunnel", real_frame("cape_tunnel_depth.png", 575.927, 576.408, 315.150, 230.586), false, {}, {}});
+    f.push_back({"real_pcl_office", real_frame("pcl_office_depth.png", 525, 525, 320, 240), false, {}, {}});
+    f.push_back({"real_rtabmap_lab", real_frame("rtabmap_lab_depth_17.png", 525, 525, 319.5, 239.5), false, {}, {}});
     return f;
   }();
   return frames;

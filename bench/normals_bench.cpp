@@ -3,14 +3,12 @@
 // same window; counters give coverage and angular error against the simulator's true surfaces.
 #include <benchmark/benchmark.h>
 
-#include <pcl/features/integral_image_normal.h>
-#include <pcl/point_cloud.h>
-#include <pcl/point_types.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "bench/bench_frames.h"
+#include "bench/frame_args.h"
+#include "bench/pcl_peer.h"
 #include "core/pipeline/pipeline.h"
 
 using namespace tunnelmap;
@@ -57,40 +55,27 @@ void BM_NormalsOurs(benchmark::State& state) {
   state.SetLabel(nf.name);
 }
 
+// PCL's IntegralImageNormalEstimation with our window (AVERAGE_3D_GRADIENT, depth-change
+// factor 0.02): the same settings as the PCL peer's normal stage (bench/pcl_peer.cpp).
 void BM_NormalsPcl(benchmark::State& state) {
   const auto& nf = bench_frames()[state.range(0)];
   const Parameters p;
   OrganizedCloud cloud;
   build_cloud(nf.frame, cloud_options(p), cloud);
-  pcl::PointCloud<pcl::PointXYZ>::Ptr input(new pcl::PointCloud<pcl::PointXYZ>(cloud.width, cloud.height));
-  for (std::size_t i = 0; i < cloud.points.size(); ++i)
-    (*input)[i].getVector3fMap() = cloud.points[i];
-  input->is_dense = false;
-  pcl::IntegralImageNormalEstimation<pcl::PointXYZ, pcl::Normal> ne;
-  ne.setNormalEstimationMethod(ne.AVERAGE_3D_GRADIENT);
-  ne.setMaxDepthChangeFactor(0.02f);
-  ne.setNormalSmoothingSize(static_cast<float>(p.get("normals.smoothing_px")));
-  pcl::PointCloud<pcl::Normal> normals;
-  for (auto _ : state) {
-    ne.setInputCloud(input);
-    ne.compute(normals);
-  }
+  tunnelmap::bench::PclPeerSettings s = tunnelmap::bench::tuned_pcl_settings();
+  s.smoothing_px = static_cast<float>(p.get("normals.smoothing_px"));
+  tunnelmap::bench::PclPeer peer(s);
+  peer.set_cloud(cloud);
+  for (auto _ : state) peer.estimate_normals();
   if (!nf.true_normals.empty()) {
-    std::vector<Eigen::Vector3f> n(normals.size());
-    for (std::size_t i = 0; i < normals.size(); ++i) n[i] = normals[i].getNormalVector3fMap();
-    const NormalQuality q = quality(nf.true_normals, n);
+    const NormalQuality q = quality(nf.true_normals, peer.normals());
     state.counters["coverage"] = q.coverage;
     state.counters["median_err_deg"] = q.median_err_deg;
   }
   state.SetLabel(nf.name);
 }
 
-void frames(benchmark::internal::Benchmark* b) {
-  for (std::size_t i = 0; i < bench_frames().size(); ++i) b->Arg(static_cast<int>(i));
-  b->Unit(benchmark::kMillisecond);
-}
-
 }  // namespace
 
-BENCHMARK(BM_NormalsOurs)->Apply(frames);
-BENCHMARK(BM_NormalsPcl)->Apply(frames);
+BENCHMARK(BM_NormalsOurs)->Apply(tunnelmap::bench::per_frame);
+BENCHMARK(BM_NormalsPcl)->Apply(tunnelmap::bench::per_frame);

@@ -1,12 +1,15 @@
 // Stage-by-stage timing of the PG&C pipeline on VGA frames, one thread, Release.
-// Run: ./build/bench/tunnelmap_bench --benchmark_min_time=1
+// Run: bash scripts/bench.sh (or build-*/bench/tunnelmap_bench --benchmark_filter=...).
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_frames.h"
+#include "bench/frame_args.h"
+#include "bench/plane_quality.h"
 #include "core/pipeline/pipeline.h"
 
 using namespace tunnelmap;
 using tunnelmap::bench::bench_frames;
+using tunnelmap::bench::per_frame;
 
 namespace {
 
@@ -35,51 +38,58 @@ void BM_Grow(benchmark::State& state) {
   estimate_normals(normal_options(p), cloud);
   GrowOptions g = grow_options(p);
   g.compute_contours = false;
-  std::size_t planes = 0;
-  for (auto _ : state) planes = extract_planes(cloud, g).planes.size();
-  state.counters["planes"] = static_cast<double>(planes);
+  PlaneSegments planes;
+  for (auto _ : state) extract_planes(cloud, g, planes);
+  state.counters["planes"] = static_cast<double>(planes.planes.size());
   state.SetLabel(bench_frames()[state.range(0)].name);
+}
+
+// Default parameters with PG&C grown on every `grid_step`-th pixel (1 = the paper's growing).
+Parameters params_with_grid_step(int grid_step) {
+  Parameters p;
+  p.set("grow.grid_step", grid_step);
+  return p;
 }
 
 // The paper's "plane extraction": cloud + normals + PG&C + areas + contours.
-void BM_PlaneExtraction(benchmark::State& state) {
+void plane_extraction(benchmark::State& state, int grid_step) {
   const DepthFrame& f = bench_frames()[state.range(0)].frame;
-  const Parameters p;
+  const Parameters p = params_with_grid_step(grid_step);
+  const CloudOptions co = cloud_options(p);
+  const NormalOptions no = normal_options(p);
+  const GrowOptions go = grow_options(p);
   OrganizedCloud cloud;
-  std::size_t planes = 0;
+  PlaneSegments planes;
   for (auto _ : state) {
-    build_cloud(f, cloud_options(p), cloud);
-    estimate_normals(normal_options(p), cloud);
-    planes = extract_planes(cloud, grow_options(p)).planes.size();
+    build_cloud(f, co, cloud);
+    estimate_normals(no, cloud);
+    extract_planes(cloud, go, planes);
   }
-  state.counters["planes"] = static_cast<double>(planes);
+  tunnelmap::bench::set_plane_counters(state, bench_frames()[state.range(0)], planes);
   state.SetLabel(bench_frames()[state.range(0)].name);
 }
+void BM_PlaneExtraction(benchmark::State& state) { plane_extraction(state, 1); }
+// Issue 7's coarse-to-fine fast path: grow on every other pixel, assign the rest by eq. 2.
+void BM_PlaneExtractionFast(benchmark::State& state) { plane_extraction(state, 2); }
 
 // Full detection: plane extraction + tunnel template fit.
-void BM_Detection(benchmark::State& state) {
+void detection(benchmark::State& state, int grid_step) {
   const auto& nf = bench_frames()[state.range(0)];
-  Pipeline pipeline;
+  Pipeline pipeline(params_with_grid_step(grid_step));
   FrameResult result;
   for (auto _ : state) pipeline.run(nf.frame, result, nullptr);
   state.counters["detected"] = result.map.detected ? 1 : 0;
   state.SetLabel(nf.name);
 }
-
-void frame_args(benchmark::internal::Benchmark* b) {
-  for (std::size_t i = 0; i < bench_frames().size(); ++i) b->Arg(static_cast<int>(i));
-  b->Unit(benchmark::kMillisecond)->ComputeStatistics("median", [](const std::vector<double>& v) {
-    std::vector<double> s = v;
-    std::sort(s.begin(), s.end());
-    return s[s.size() / 2];
-  });
-}
+void BM_Detection(benchmark::State& state) { detection(state, 1); }
+void BM_DetectionFast(benchmark::State& state) { detection(state, 2); }
 
 }  // namespace
 
-BENCHMARK(BM_Cloud)->Apply(frame_args);
-BENCHMARK(BM_Normals)->Apply(frame_args);
-BENCHMARK(BM_Grow)->Apply(frame_args);
-BENCHMARK(BM_PlaneExtraction)->Apply(frame_args);
-BENCHMARK(BM_Detection)->Apply(frame_args);
-BENCHMARK_MAIN();
+BENCHMARK(BM_Cloud)->Apply(per_frame);
+BENCHMARK(BM_Normals)->Apply(per_frame);
+BENCHMARK(BM_Grow)->Apply(per_frame);
+BENCHMARK(BM_PlaneExtraction)->Apply(per_frame);
+BENCHMARK(BM_PlaneExtractionFast)->Apply(per_frame);
+BENCHMARK(BM_Detection)->Apply(per_frame);
+BENCHMARK(BM_DetectionFast)->Apply(per_frame);

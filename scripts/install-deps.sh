@@ -15,6 +15,7 @@ PACKAGES=(
   nlohmann-json3-dev libcli11-dev
   xvfb xauth
   dpkg-dev file help2man
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -20,6 +20,9 @@ grep -q '"detected": 3' "$out/r.json"
 /usr/bin/tunnelmap-cli devices | grep -q '^tunnelmap-sim://lab'
 /usr/bin/tunnelmap-cli detect --device 'tunnelmap-sim://lab?frames=3' --frames 5 \
   --params /usr/share/tunnelmap/presets/lab.json | grep -q 'summary: 5/5 frames detected'
+# `evaluate` finds its presets in the installed location, not in a source tree.
+/usr/bin/tunnelmap-cli evaluate --protocol ci --methods pgc --frames 1 --check --out "$out/eval" > "$out/eval.txt"
+grep -qx 'presets: /usr/share/tunnelmap/presets' "$out/eval.txt" && test -s "$out/eval/table1.md"
 test -x /usr/bin/tunnelmap && test -f /usr/share/applications/tunnelmap.desktop
 test -f /usr/share/icons/hicolor/scalable/apps/tunnelmap.svg && test -f /usr/share/mime/packages/tunnelmap.xml
 if command -v man >/dev/null; then test -f /usr/share/man/man1/tunnelmap-cli.1.gz; fi

@@ -1,4 +1,5 @@
-// Input readers: depth PNG, organised PCD, dataset folders, the input dispatcher, real frames.
+// Input readers: depth PNG, organised PCD, dataset folders, the input dispatcher, the PLY mesh
+// reader (round trips with our exporters, hostile files), real frames.
 #include <gtest/gtest.h>
 
 #include <pcl/io/pcd_io.h>
@@ -9,10 +10,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/export/map_ply.h"
+#include "core/export/mesh_ply.h"
+#include "core/export/planes_ply.h"
+#include "core/io/json_file.h"
+#include "core/io/ply_mesh_reader.h"
 #include "core/io/readers.h"
 #include "core/util/error.h"
 #include "tests/support/io_temp_dir.h"
@@ -529,6 +536,330 @@ TEST(OpenInput, DispatchesByTypeAndRejectsUnknown) {
   expect_input_error([&] { open_input(txt, {}); }, {txt, "unknown input type"});
   expect_input_error([&] { open_input(ds.tmp.file("missing.png"), {}); }, {"missing.png", "not found"});
   expect_input_error([&] { open_input(ds.tmp.file("depth"), {}); }, {"no dataset.json"});
+}
+
+// ---------------------------------------------------------------- hardening: PNG / PCD / dataset
+
+TEST(DepthPng, AllZeroDepthReadsAsFrameWithNoValidPixel) {
+  // Decision (docs/robustness.md): a blank frame is data, not an error; the pipeline reports
+  // "no tunnel" for it, so one blinded frame does not abort a whole sequence.
+  IoTempDir tmp;
+  const std::string path = tmp.file("zero.png");
+  ASSERT_TRUE(cv::imwrite(path, cv::Mat(24, 32, CV_16UC1, cv::Scalar(0))));
+  const DepthFrame f = read_depth_png(path, {});
+  ASSERT_EQ(f.depth.size(), 32u * 24u);
+  for (float d : f.depth) EXPECT_EQ(d, 0.f);
+}
+
+TEST(RgbImage, AcceptsPngAndJpegOnly) {
+  IoTempDir tmp;
+  const cv::Mat bgr(6, 8, CV_8UC3, cv::Scalar(30, 20, 200));
+  for (const char* name : {"c.png", "c.jpg", "c.bmp"}) ASSERT_TRUE(cv::imwrite(tmp.file(name), bgr));
+  int w = 0, h = 0;
+  for (const char* name : {"c.png", "c.jpg"}) {
+    const auto rgb = read_rgb_image(tmp.file(name), w, h);
+    ASSERT_EQ(rgb.size(), 8u * 6u * 3u);
+    EXPECT_NEAR(rgb[0], 200, 3) << name;  // red first
+    EXPECT_NEAR(rgb[2], 30, 3) << name;
+  }
+  // OpenCV would decode BMP, TIFF, EXR...: only the formats datasets use are let through.
+  expect_input_error([&] { read_rgb_image(tmp.file("c.bmp"), w, h); }, {"c.bmp", "neither a PNG nor a JPEG"});
+  // A JPEG whose frame header claims 60000x50000 is refused before decoding.
+  auto jpeg = testing::read_binary_file(tmp.file("c.jpg"));
+  for (std::size_t i = 2; i + 9 < jpeg.size(); ++i)
+    if (std::uint8_t(jpeg[i]) == 0xff && std::uint8_t(jpeg[i + 1]) == 0xc0) {
+      jpeg[i + 5] = char(50000 >> 8), jpeg[i + 6] = char(50000 & 0xff);
+      jpeg[i + 7] = char(60000 >> 8), jpeg[i + 8] = char(60000 & 0xff);
+      break;
+    }
+  testing::write_binary_file(tmp.file("huge.jpg"), jpeg);
+  expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h); }, {"huge.jpg", "absurd image size 60000x50000"});
+}
+
+TEST(DepthPng, DecodesFromMemoryLikeFromFile) {
+  IoTempDir tmp;
+  const std::string path = tmp.file("d.png");
+  ASSERT_TRUE(cv::imwrite(path, depth_ramp(20, 10)));
+  const auto raw = testing::read_binary_file(path);
+  const std::vector<std::uint8_t> bytes(raw.begin(), raw.end());
+  const DepthFrame a = read_depth_png(path, {}), b = decode_depth_png(bytes, "mem.png", {});
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(b.source, "mem.png");
+  // Every truncation of a valid PNG is refused (or, if the cut is after IEND, read intact).
+  for (std::size_t n = 0; n + 12 < bytes.size(); ++n)
+    expect_input_error([&] { decode_depth_png({bytes.begin(), bytes.begin() + n}, "cut.png", {}); }, {"cut.png"});
+}
+
+std::string pcd_text(const std::string& fields_size_type_count, const std::string& data,
+                     const std::string& body, int w = 4, int h = 3) {
+  return "VERSION .7\n" + fields_size_type_count + "WIDTH " + std::to_string(w) + "\nHEIGHT " +
+         std::to_string(h) + "\nPOINTS " + std::to_string(w * h) + "\nDATA " + data + "\n" + body;
+}
+
+TEST(OrganizedPcd, RejectsInconsistentFieldDescriptions) {
+  IoTempDir tmp;
+  const std::string xyz = "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+  std::string ascii_body;
+  for (int i = 0; i < 12; ++i) ascii_body += "0.1 0.2 1.5\n";
+  const auto expect = [&](const std::string& name, const std::string& text, const std::vector<std::string>& parts) {
+    const std::string path = tmp.file(name);
+    testing::write_text_file(path, text);
+    std::vector<std::string> all = {path};
+    all.insert(all.end(), parts.begin(), parts.end());
+    expect_input_error([&] { read_organized_pcd(path, {}); }, all);
+  };
+  expect("size_count.pcd", pcd_text("FIELDS x y z\nSIZE 4 4\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"one entry per field"});
+  expect("bad_type.pcd", pcd_text("FIELDS x y z\nSIZE 4 4 4\nTYPE F Q F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"bad TYPE 'Q'"});
+  expect("bad_size.pcd", pcd_text("FIELDS x y z\nSIZE 4 3 4\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"bad SIZE 3 for field 'y'"});
+  expect("float16.pcd", pcd_text("FIELDS x y z\nSIZE 4 2 4\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"TYPE F with SIZE 2"});
+  expect("double_xyz.pcd", pcd_text("FIELDS x y z\nSIZE 8 8 8\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"field 'x' must be a single 32-bit float"});
+  expect("zero_count.pcd", pcd_text("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 0 1\n", "ascii", ascii_body),
+         {"bad COUNT value '0'"});
+  // binary_compressed: the sizes of the LZF block must agree with the header and the file.
+  const auto compressed = [&](std::uint32_t comp, std::uint32_t raw, std::size_t payload) {
+    std::string sizes(8, '\0');
+    for (int k = 0; k < 4; ++k) {
+      sizes[k] = static_cast<char>((comp >> (8 * k)) & 0xff);
+      sizes[4 + k] = static_cast<char>((raw >> (8 * k)) & 0xff);
+    }
+    return pcd_text(xyz, "binary_compressed", sizes + std::string(payload, '\x1f'));
+  };
+  expect("lzf_raw.pcd", compressed(20, 1000, 20), {"compressed block holds 1000 bytes", "needs 144"});
+  expect("lzf_past_end.pcd", compressed(5000, 144, 20), {"runs past the end"});
+  // Lines PCL reads differently from us (its header ends at a blank line; it reads on after
+  // DATA): found by fuzzing, a leading "\r\n" line made PCL dereference null.
+  expect("leading_cr.pcd", "\r\n" + pcd_text(xyz, "ascii", ascii_body), {"blank, indented or binary line"});
+  expect("indented.pcd", pcd_text(" FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", ascii_body),
+         {"blank, indented or binary line"});
+  expect("keyword_after_data.pcd", pcd_text(xyz, "ascii", "\n# c\nWIDTH 400\n" + ascii_body),
+         {"data after DATA starts with a header line ('WIDTH')"});
+  // A header line longer than 64 KiB (no newline): refused without reading the file whole.
+  expect("no_newline.pcd", "VERSION .7\nFIELDS " + std::string(70000, 'x'), {"incomplete header"});
+}
+
+TEST(OrganizedPcd, NanAndInfinitePointsBecomeNoMeasurement) {
+  // Decision: NaN / inf points are "no measurement" (depth 0). With no valid point left the
+  // intrinsics cannot be estimated: a clear error asking for --intrinsics; with them, a blank frame.
+  IoTempDir tmp;
+  const std::string path = tmp.file("nan.pcd");
+  std::string body;
+  for (int i = 0; i < 12; ++i) body += i % 2 ? "nan nan nan\n" : "inf 1 inf\n";
+  testing::write_text_file(path, pcd_text("FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n", "ascii", body));
+  expect_input_error([&] { read_organized_pcd(path, {}); }, {path, "--intrinsics"});
+  ReadOptions opt;
+  opt.intrinsics = Intrinsics{5, 5, 1.5, 1, 4, 3};
+  const DepthFrame f = read_organized_pcd(path, opt);
+  ASSERT_EQ(f.depth.size(), 12u);
+  for (float d : f.depth) EXPECT_EQ(d, 0.f);
+}
+
+TEST(Dataset, SymlinkLoopsAreRefusedWithTheirReason) {
+  DatasetFixture ds;
+  fs::create_symlink("loop", ds.tmp.path() / "loop");
+  ds.expect_error([](json& j) { j["frames"][0]["depth"] = "loop/000000.png"; }, {"'frames[0].depth'", "symbolic links"});
+  ds.expect_error([](json& j) { j["frames"][0]["rgb"] = "loop"; }, {"'frames[0].rgb'", "symbolic links"});
+  // The dataset folder itself is a loop.
+  const std::string looped = (ds.tmp.path() / "loop").string();
+  expect_input_error([&] { read_dataset(looped); }, {looped, "symbolic links"});
+  expect_input_error([&] { open_input(looped, {}); }, {looped, "symbolic links"});
+}
+
+TEST(Dataset, NonFiniteAndNonNumericValuesNameTheKey) {
+  DatasetFixture ds;
+  // JSON has no NaN; an overflowing literal is refused by the parser itself.
+  ds.j["depth_scale"] = 1000;
+  std::string text = ds.j.dump();
+  const auto at = text.find("\"depth_scale\":1000");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 18, "\"depth_scale\":1e999");
+  testing::write_text_file(ds.json_path(), text);
+  expect_input_error([&] { read_dataset(ds.tmp.path().string()); }, {ds.json_path(), "malformed JSON", "number overflow", "1e999"});
+  ds.expect_error([](json& j) { j["frames"][0]["pose"] = json::array({"a", 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}); },
+                  {"'frames[0].pose[0]'", "number"});
+  ds.expect_error([](json& j) { j["intrinsics"] = "kinect"; }, {"'intrinsics'", "object"});
+  ds.expect_error([](json& j) { j["format"] = 1; }, {"'format'", "string"});
+}
+
+TEST(JsonFile, EveryJsonProblemIsOneInputErrorLine) {
+  // Found by fuzzing the presets: nlohmann throws out_of_range, not parse_error, for "1e999".
+  IoTempDir tmp;
+  testing::write_text_file(tmp.file("overflow.json"), "{\"params\": {\"grow.angle_deg\": 1e999}}");
+  expect_input_error([&] { read_json_file(tmp.file("overflow.json")); }, {"overflow.json", "malformed JSON", "overflow"});
+  testing::write_text_file(tmp.file("bad_utf8.json"), "{\"a\": \"\xff\"}");
+  expect_input_error([&] { read_json_file(tmp.file("bad_utf8.json")); }, {"bad_utf8.json", "malformed JSON"});
+  expect_input_error([&] { read_json_file(tmp.file("none.json")); }, {"none.json", "not found"});
+  expect_input_error([&] { read_json_file(tmp.path().string()); }, {"folder"});
+  testing::write_text_file(tmp.file("ok.json"), "{\"a\": [1, 2.5]}");
+  EXPECT_DOUBLE_EQ(read_json_file(tmp.file("ok.json"))["a"][1].get<double>(), 2.5);
+}
+
+// ---------------------------------------------------------------- PLY mesh reader
+
+TunnelMap one_wall_map() {
+  TunnelMap m;
+  m.detected = true;
+  m.status = "ok";
+  m.width_m = 0.8;
+  m.height_m = 1.3;
+  Wall& w = m.wall(WallClass::Top);
+  w.found = true;
+  w.boundary = {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.8, 0, 1), Eigen::Vector3d(0.8, 0, 3),
+                Eigen::Vector3d(0, 0, 3)};
+  w.zones.push_back({ZoneKind::Forbidden, {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.2, 0, 1),
+                                           Eigen::Vector3d(0.2, 0, 3), Eigen::Vector3d(0, 0, 3)}});
+  w.zones.push_back({ZoneKind::Traversable, {Eigen::Vector3d(0.2, 0, 1), Eigen::Vector3d(0.8, 0, 1),
+                                             Eigen::Vector3d(0.8, 0, 3), Eigen::Vector3d(0.2, 0, 3)}});
+  return m;
+}
+
+TEST(PlyMeshReader, ReadsOurMapPlyBack) {
+  IoTempDir tmp;
+  const std::string path = tmp.file("map.ply");
+  write_map_ply(path, one_wall_map(), json{{"grow.angle_deg", 4.0}});
+  const PlyMesh m = read_ply_mesh(path);
+  // 2 zones + 4 border quads, 4 vertices and 2 triangles each.
+  ASSERT_EQ(m.vertices.size(), 24u);
+  ASSERT_EQ(m.triangles.size(), 12u);
+  ASSERT_EQ(m.colors.size(), 24u);
+  ASSERT_EQ(m.face_labels.size(), 12u);
+  ASSERT_EQ(m.face_walls.size(), 12u);
+  EXPECT_TRUE(m.normals.empty());
+  EXPECT_TRUE((m.vertices[0] - Eigen::Vector3f(0, 0, 1)).norm() < 1e-6f);
+  EXPECT_TRUE((m.vertices[5] - Eigen::Vector3f(0.8f, 0, 1)).norm() < 1e-6f);
+  EXPECT_EQ(m.colors[0], (std::array<std::uint8_t, 3>{255, 140, 0}));   // forbidden orange
+  EXPECT_EQ(m.colors[4], (std::array<std::uint8_t, 3>{220, 30, 30}));   // traversable red
+  EXPECT_EQ(m.face_labels[0], int(MapFaceLabel::Forbidden));
+  EXPECT_EQ(m.face_labels[2], int(MapFaceLabel::Traversable));
+  EXPECT_EQ(m.face_labels[4], int(MapFaceLabel::Boundary));
+  for (int w : m.face_walls) EXPECT_EQ(w, int(WallClass::Top));
+  EXPECT_EQ(m.triangles[3], (std::array<std::int32_t, 3>{4, 6, 7}));
+  bool has_param = false;
+  for (const auto& c : m.comments) has_param |= c == "param grow.angle_deg 4";
+  EXPECT_TRUE(has_param);
+}
+
+TEST(PlyMeshReader, ReadsOurFusedMeshAndPlanesPlyBack) {
+  IoTempDir tmp;
+  TriangleMesh mesh;
+  for (int i = 0; i < 5; ++i) {
+    mesh.vertices.emplace_back(0.5f * i, -1.25f * i, 3.f + i);
+    mesh.normals.emplace_back(0, 0, 1);
+    mesh.colors.push_back({std::uint8_t(10 * i), 20, std::uint8_t(250 - i)});
+  }
+  mesh.triangles = {{0, 1, 2}, {2, 3, 4}, {4, 0, 1}};
+  write_mesh_ply(tmp.file("mesh.ply"), mesh);
+  const PlyMesh m = read_ply_mesh(tmp.file("mesh.ply"));
+  ASSERT_EQ(m.vertices.size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(m.vertices[i], mesh.vertices[i]);
+    EXPECT_EQ(m.normals[i], mesh.normals[i]);
+    EXPECT_EQ(m.colors[i], mesh.colors[i]);
+  }
+  EXPECT_EQ(m.triangles, mesh.triangles);
+
+  OrganizedCloud cloud;
+  cloud.width = 3;
+  cloud.height = 1;
+  cloud.points = {{0.1f, 0.2f, 1.f}, {0.3f, 0.4f, 2.f}, {0.5f, 0.6f, 3.f}};
+  PlaneSegments planes;
+  planes.width = 3;
+  planes.height = 1;
+  planes.planes.resize(1);
+  planes.planes[0].id = 7;
+  planes.labels = {7, 0, 7};
+  write_planes_ply(tmp.file("planes.ply"), cloud, planes, {WallClass::Left});
+  const PlyMesh p = read_ply_mesh(tmp.file("planes.ply"));
+  ASSERT_EQ(p.vertices.size(), 2u);
+  EXPECT_EQ(p.vertices[1], cloud.points[2]);
+  EXPECT_EQ(p.vertex_labels, (std::vector<std::int32_t>{7, 7}));
+  EXPECT_TRUE(p.triangles.empty());
+}
+
+const char* kAsciiQuad =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n1 1 0\n0 1 -2.5e-1\n4 0 1 2 3\n";
+
+TEST(PlyMeshReader, ReadsAsciiAndTriangulatesPolygons) {
+  const std::string text = kAsciiQuad;
+  const PlyMesh m = parse_ply_mesh(reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), "q.ply");
+  ASSERT_EQ(m.vertices.size(), 4u);
+  EXPECT_FLOAT_EQ(m.vertices[3].z(), -0.25f);
+  ASSERT_EQ(m.triangles.size(), 2u);
+  EXPECT_EQ(m.triangles[1], (std::array<std::int32_t, 3>{0, 2, 3}));
+}
+
+TEST(PlyMeshReader, RefusesHostileFilesWithOneLine) {
+  const auto parse = [](const std::string& text) {
+    return parse_ply_mesh(reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), "h.ply");
+  };
+  const auto expect = [&](const std::string& text, const std::string& part) {
+    expect_input_error([&] { parse(text); }, {"h.ply", part});
+  };
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  expect("hello", "not a PLY");
+  expect("ply\nformat binary_big_endian 1.0\nend_header\n", "binary_big_endian");
+  expect("ply\nformat ascii 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n0 0 0\n",
+         "truncated PLY: header promises");
+  expect("ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n", "absurd element count");
+  expect(head + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "refers to vertex 7 of 3");
+  expect(head + face + "0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n", "length");
+  expect(head + face + "0 0 0\n1 0 0\n0 1 0\n3 0 1 -1\n", "vertex index");
+  expect(head + face + "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "PLY vertex 1 position is not finite");
+  expect(head + face + "0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n", "bad number 'zero'");
+  expect(head + "property float x\n" + face, "declared twice");
+  expect(head + "element face 1\nproperty list float int vertex_indices\nend_header\n", "list types must be integers");
+  expect(head + "property uchar red\nproperty uchar green\nproperty uchar blue\n" + face + "0 0 0 1 2 3\n1 0 0 4 5 300\n0 1 0 1 1 1\n3 0 1 2\n",
+         "bad value '300' for a uchar");
+  expect("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n", "no end_header");
+  expect("ply\nformat ascii 1.0\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n", "no vertex element");
+
+  // Every truncation of a binary map PLY and of an ascii one: an InputError, never a crash.
+  IoTempDir tmp;
+  write_map_ply(tmp.file("map.ply"), one_wall_map(), json::object());
+  const auto map = testing::read_binary_file(tmp.file("map.ply"));
+  for (const std::string& full : {std::string(map.begin(), map.end()), std::string(kAsciiQuad)}) {
+    for (std::size_t n = 0; n + 1 < full.size(); ++n) {
+      const std::string cut = full.substr(0, n);
+      if (n + 2 >= full.size() && full == kAsciiQuad) continue;  // "4 0 1 2 3" minus its newline is whole
+      expect_input_error([&] { parse(cut); }, {"h.ply"});
+    }
+  }
+}
+
+TEST(PlyMeshReader, RandomByteFlipsNeverEscapeAsAnythingButInputError) {
+  IoTempDir tmp;
+  write_map_ply(tmp.file("map.ply"), one_wall_map(), json::object());
+  const auto map = testing::read_binary_file(tmp.file("map.ply"));
+  std::mt19937 rng(8);
+  int refused = 0, read = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<std::uint8_t> bytes(map.begin(), map.end());
+    for (int k = 0; k < 3; ++k) bytes[rng() % bytes.size()] = static_cast<std::uint8_t>(rng());
+    try {
+      const PlyMesh m = parse_ply_mesh(bytes.data(), bytes.size(), "flip.ply");
+      for (const auto& t : m.triangles)
+        for (int v : t) ASSERT_LT(static_cast<std::size_t>(v), m.vertices.size());
+      ++read;
+    } catch (const InputError& e) {
+      ++refused;
+      ASSERT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    }
+  }
+  EXPECT_GT(refused, 100);
+  EXPECT_GT(read, 100);
+}
+
+TEST(PlyMeshReader, MissingFileAndFolder) {
+  IoTempDir tmp;
+  expect_input_error([&] { read_ply_mesh(tmp.file("none.ply")); }, {"none.ply", "not found"});
+  expect_input_error([&] { read_ply_mesh(tmp.path().string()); }, {"folder"});
 }
 
 // ---------------------------------------------------------------- real frames

@@ -303,6 +303,24 @@ TEST(TunnelDetector, ContextOfEarlierScans) {
   EXPECT_TRUE(detect(s, fine_options(), &empty).detected);
 }
 
+TEST(TunnelContext, KeepsOnlyTheLastWindowOfScans) {
+  // A long stream: 1000 scans of a 0.80 m tunnel, then 1001 of a 0.90 m one; the context
+  // follows the recent scans and its memory stays bounded.
+  TunnelContext c;
+  TunnelMap m;
+  m.detected = true;
+  m.height_m = 1.2;
+  m.width_m = 0.80;
+  for (std::size_t i = 0; i < TunnelContext::kWindow; ++i) c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.80);
+  m.width_m = 0.90;
+  for (std::size_t i = 0; i < TunnelContext::kWindow / 2 + 1; ++i) c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.90);  // the newer scans are now the majority of the window
+  for (std::size_t i = 0; i < TunnelContext::kWindow; ++i) c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.90);
+  EXPECT_DOUBLE_EQ(c.height_m(), 1.2);
+}
+
 TEST(TunnelContext, MediansOfDetectedMapsOnly) {
   TunnelContext c;
   EXPECT_TRUE(c.empty());

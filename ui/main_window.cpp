@@ -22,12 +22,15 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <nlohmann/json.hpp>
-#include <vtkPLYReader.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
 
 #include "core/export/map_ply.h"
 #include "core/export/planes_ply.h"
+#include "core/io/ply_mesh_reader.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #include "sensors/openni/device_list.h"
@@ -522,18 +525,56 @@ bool MainWindow::save_preset(const QString& path) {
   return true;
 }
 
+namespace {
+
+// Our strict PLY reader's mesh as VTK data (vtkPLYReader crashes on hostile files): points,
+// triangles, per-vertex colours as the scalars ("RGB") and normals when the file has them.
+vtkSmartPointer<vtkPolyData> to_poly_data(const PlyMesh& m) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(m.vertices.size()));
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), m.vertices[i].x(), m.vertices[i].y(), m.vertices[i].z());
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  polys->AllocateExact(static_cast<vtkIdType>(m.triangles.size()), static_cast<vtkIdType>(3 * m.triangles.size()));
+  for (const auto& t : m.triangles) {
+    const vtkIdType ids[3] = {t[0], t[1], t[2]};
+    polys->InsertNextCell(3, ids);
+  }
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  if (!m.colors.empty()) {
+    auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    rgb->SetName("RGB");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(static_cast<vtkIdType>(m.colors.size()));
+    for (std::size_t i = 0; i < m.colors.size(); ++i)
+      for (int k = 0; k < 3; ++k) rgb->SetTypedComponent(static_cast<vtkIdType>(i), k, m.colors[i][k]);
+    poly->GetPointData()->SetScalars(rgb);
+  }
+  if (!m.normals.empty()) {
+    auto normals = vtkSmartPointer<vtkFloatArray>::New();
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(static_cast<vtkIdType>(m.normals.size()));
+    for (std::size_t i = 0; i < m.normals.size(); ++i)
+      for (int k = 0; k < 3; ++k) normals->SetTypedComponent(static_cast<vtkIdType>(i), k, m.normals[i][k]);
+    poly->GetPointData()->SetNormals(normals);
+  }
+  return poly;
+}
+
+}  // namespace
+
 bool MainWindow::open_mesh(const QString& path) {
   vtkSmartPointer<vtkPolyData> mesh;
   try {
     const std::string file = path.toStdString();
-    if (!QFileInfo(path).isFile()) throw InputError(file, "no such file");
-    if (!vtkPLYReader::CanReadFile(file.c_str())) throw InputError(file, "not a PLY file");
-    auto reader = vtkSmartPointer<vtkPLYReader>::New();
-    reader->SetFileName(file.c_str());
-    reader->Update();
-    mesh = reader->GetOutput();
-    if (!mesh || mesh->GetNumberOfPoints() == 0) throw InputError(file, "PLY has no vertices");
-    if (mesh->GetNumberOfPolys() == 0) throw InputError(file, "PLY has no faces (not a mesh)");
+    const PlyMesh ply = read_ply_mesh(file);  // InputError(file, problem) on any bad input
+    if (ply.vertices.empty()) throw InputError(file, "PLY has no vertices");
+    if (ply.triangles.empty()) throw InputError(file, "PLY has no faces (not a mesh)");
+    mesh = to_poly_data(ply);
   } catch (const std::exception& e) {
     show_error(QString::fromStdString(e.what()));
     return false;

@@ -11,6 +11,7 @@
 #include "core/baselines/method_runner.h"
 #include "core/export/map_ply.h"
 #include "core/io/frame_source.h"
+#include "core/pipeline/sequence_runner.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
 #include "sensors/openni/device_frame_source.h"
@@ -26,6 +27,7 @@ struct DetectOptions {
   std::string method = "pgc";  // pgc | ransac | qhull
   std::string device;  // live OpenNI2 device URI ("default" = the first one)
   int frames = 30;     // frames to process from a live device
+  int threads = 0;     // worker threads for sequences (0 = all cores)
 };
 
 void print_frame_line(std::size_t index, const std::string& what, const FrameResult& r) {
@@ -69,27 +71,46 @@ int run_detect(const DetectOptions& o) {
   runner.set_camera_up(o.in.camera_up());
   if (const Dataset* ds = source->dataset()) runner.set_world_up(ds->up);
   TunnelContext context;
+  // Frames are detected in parallel without the context (each worker with its own copy of the
+  // runner); the context of earlier frames is applied in frame order, so the output equals a
+  // serial run. Qhull checks the context inside its fit: it runs in order (loading still ahead).
+  SequenceRunner::Work work;
+  SequenceRunner::Ordered in_order;
+  if (runner.method() == Method::Qhull) {
+    in_order = [&runner, &context](SequenceFrame& f) { runner.run(f.frame, f.result, &context); };
+  } else {
+    work = [runner](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
+    in_order = [&context, opt = tunnel_options(pipeline.params())](SequenceFrame& f) {
+      apply_tunnel_context(f.result.map, opt, context);
+      if (f.result.map.detected) context.accept(f.result.map);
+    };
+  }
+  SequenceOptions seq;
+  seq.threads = live ? 1 : o.threads;         // a live camera delivers one frame at a time
+  seq.serial_loading = !source->dataset();    // recordings have a read position
+  SequenceRunner sequence(std::move(work), std::move(in_order), seq);
+
   nlohmann::json frames = nlohmann::json::array();
   std::optional<TunnelMap> last_map;
   Eigen::Isometry3d last_pose = Eigen::Isometry3d::Identity();
   Progress progress(source->size());
-  FrameResult result;
-  for (std::size_t i = 0; i < source->size(); ++i) {
-    const DepthFrame frame = source->load(i);
-    const auto got = clock::now();
-    if (i == 0) first_frame = got;
-    last_frame = got;
-    runner.run(frame, result, &context);
-    latencies_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - got).count());
+  sequence.run(*source, [&](SequenceFrame& f) {
+    if (!f.ok()) std::rethrow_exception(f.error);  // one-line error, exit 3, as before
+    const std::size_t i = f.index;
+    const FrameResult& result = f.result;
+    if (i == 0) first_frame = f.loaded_at;
+    last_frame = f.loaded_at;
+    latencies_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - f.loaded_at).count());
     summary.add(result);
-    frames.push_back(detection_frame_json(i, frame.source, result));
+    frames.push_back(detection_frame_json(i, f.frame.source, result));
     if (result.map.detected) {
       last_map = result.map;
-      last_pose = frame.pose.value_or(Eigen::Isometry3d::Identity());
+      last_pose = f.frame.pose.value_or(Eigen::Isometry3d::Identity());
     }
     if (!o.quiet) print_frame_line(i, source->describe(i), result);
     progress.step(i + 1);
-  }
+    return true;
+  });
   summary.finish();
   std::printf("summary: %d/%d frames detected", summary.detected, summary.frames);
   if (summary.detected > 0)
@@ -133,6 +154,8 @@ void add_detect_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--json", o.json_path, "Write per-frame results and a summary as JSON");
   cmd->add_option("--ply", o.ply_path,
                   "Write the tunnel map (last detected frame, world frame when posed) as a binary PLY mesh");
+  cmd->add_option("--threads", o.threads, "Worker threads for sequences (default 0 = all cores; 1 = serial)")
+      ->check(CLI::Range(0, 256));
   cmd->add_flag("--quiet,-q", o.quiet, "Only print the summary line");
   cmd->add_option("--method", o.method, "pgc (the paper's PG&C), ransac (R&L baseline) or qhull (convex-hull baseline)")
       ->capture_default_str();

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/cli/commands.h"
 #include "core/evaluation/protocol.h"
@@ -32,6 +34,21 @@ struct EvaluateOptions {
   bool check = false;
   bool quiet = false;
 };
+
+// The presets the replicas run with: the installed copy next to the executable's prefix
+// (<prefix>/bin/tunnelmap-cli -> <prefix>/share/tunnelmap/presets) wins over the source tree
+// the binary was built from, so an installed package never depends on a build machine's paths.
+std::string find_presets_dir() {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> candidates;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) candidates.push_back(self.parent_path().parent_path() / "share" / "tunnelmap" / "presets");
+  candidates.push_back(fs::path(ProtocolOptions().presets_dir));  // source tree (build and tests)
+  for (const fs::path& dir : candidates)
+    if (fs::is_regular_file(dir / "lab.json", ec) && fs::is_regular_file(dir / "field.json", ec)) return dir.string();
+  return candidates.back().string();  // not found: loading names the missing file
+}
 
 void write_text(const std::string& path, const std::string& text) {
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
@@ -70,6 +87,7 @@ int run(const EvaluateOptions& o) {
   p.methods = parse_methods(o.methods);
   if (o.seed < 0 || o.seed > 4294967295LL) throw ParameterError("evaluate: --seed out of range [0, 4294967295]");
   p.seed = static_cast<unsigned>(o.seed);
+  p.presets_dir = find_presets_dir();
   if (o.protocol == "ci") {  // the reduced protocol the CI test runs (docs/evaluation.md)
     p.frames_per_cell = 3;
     p.ransac_frames_per_cell = 1;
@@ -92,6 +110,7 @@ int run(const EvaluateOptions& o) {
   if (p.baselines.ransac.iterations < 1 || p.baselines.ransac.iterations > 100000)
     throw ParameterError("evaluate: --ransac-iterations must be in [1, 100000]");
   if (!o.quiet) p.progress = [](const std::string& line) { std::printf("%s\n", line.c_str()); std::fflush(stdout); };
+  if (!o.quiet && o.datasets.empty()) std::printf("presets: %s\n", p.presets_dir.c_str());
 
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);

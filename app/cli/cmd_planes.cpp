@@ -1,6 +1,7 @@
 // `tunnelmap-cli planes INPUT`: plane extraction only (cloud, normals, PG&C), with timings as
 // medians over --repeat runs and an optional 16-bit label image.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
@@ -8,6 +9,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
 #include "core/io/frame_source.h"
+#include "core/pipeline/sequence_runner.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -20,6 +22,7 @@ struct PlanesOptions {
   std::string json_path;
   std::string labels_path;
   int repeat = 1;
+  int threads = 0;  // worker threads for sequences (0 = all cores)
 };
 
 double median(std::vector<double> v) {
@@ -57,14 +60,13 @@ int run_planes(const PlanesOptions& o) {
   for (const std::string& out : {o.json_path, o.labels_path})
     if (!out.empty()) check_output_path(out);
   auto source = open_input(o.in.input, o.in.read_options());
-  nlohmann::json frames = nlohmann::json::array();
-  Progress progress(source->size());
-  OrganizedCloud cloud;
-  for (std::size_t i = 0; i < source->size(); ++i) {
-    const DepthFrame frame = source->load(i);
+  // Cloud, normals and planes (--repeat times, median timings) in the worker threads; printing
+  // and the label images in frame order.
+  const int repeat = o.repeat;
+  auto work = [params, repeat](const DepthFrame& frame, FrameResult& r) {
+    OrganizedCloud& cloud = r.cloud;
     std::vector<double> t_cloud, t_normals, t_planes, t_total;
-    PlaneSegments planes;
-    for (int k = 0; k < o.repeat; ++k) {
+    for (int k = 0; k < repeat; ++k) {
       cloud.timings_ms.clear();
       const auto start = std::chrono::steady_clock::now();
       {
@@ -72,24 +74,37 @@ int run_planes(const PlanesOptions& o) {
         build_cloud(frame, cloud_options(params), cloud);
       }
       estimate_normals(normal_options(params), cloud);
-      planes = extract_planes(cloud, grow_options(params));
+      r.planes = extract_planes(cloud, grow_options(params));
       t_total.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       t_cloud.push_back(cloud.timings_ms["cloud"]);
       t_normals.push_back(cloud.timings_ms["normals"]);
-      t_planes.push_back(planes.timings_ms["planes"]);
+      t_planes.push_back(r.planes.timings_ms["planes"]);
     }
-    const StageTimings timings = {{"cloud", median(t_cloud)},
-                                  {"normals", median(t_normals)},
-                                  {"planes", median(t_planes)},
-                                  {"total", median(t_total)}};
-    frames.push_back(planes_frame_json(i, frame.source, planes, timings));
+    r.timings_ms = {{"cloud", median(t_cloud)},
+                    {"normals", median(t_normals)},
+                    {"planes", median(t_planes)},
+                    {"total", median(t_total)}};
+  };
+  SequenceOptions seq;
+  seq.threads = o.threads;
+  seq.serial_loading = !source->dataset();  // recordings have a read position
+  SequenceRunner sequence(work, nullptr, seq);
+  nlohmann::json frames = nlohmann::json::array();
+  Progress progress(source->size());
+  sequence.run(*source, [&](SequenceFrame& f) {
+    if (!f.ok()) std::rethrow_exception(f.error);  // one-line error, exit 3, as before
+    const std::size_t i = f.index;
+    const PlaneSegments& planes = f.result.planes;
+    const StageTimings& timings = f.result.timings_ms;
+    frames.push_back(planes_frame_json(i, f.frame.source, planes, timings));
     std::printf("[%zu] %s: %zu planes, normals %.2f ms, planes %.2f ms, total %.2f ms%s\n", i,
                 source->describe(i).c_str(), planes.planes.size(), timings.at("normals"),
                 timings.at("planes"), timings.at("total"),
                 o.repeat > 1 ? (" (median of " + std::to_string(o.repeat) + ")").c_str() : "");
     if (!o.labels_path.empty()) write_labels(labels_name(o.labels_path, i, source->size()), planes);
     progress.step(i + 1);
-  }
+    return true;
+  });
   if (!o.json_path.empty()) {
     nlohmann::json doc = {{"tool", "tunnelmap"}, {"version", TUNNELMAP_VERSION}, {"method", "pgc"},
                           {"input", o.in.input}, {"params", params.to_json()}, {"repeat", o.repeat},
@@ -107,6 +122,9 @@ void add_planes_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--json", o.json_path, "Write the planes and timings as JSON");
   cmd->add_option("--labels", o.labels_path, "Write the plane label image (16-bit PNG; _NNNNNN per frame for sequences)");
   cmd->add_option("--repeat", o.repeat, "Run N times and report median timings");
+  cmd->add_option("--threads", o.threads,
+                  "Worker threads for sequences (default 0 = all cores; use 1 for undisturbed timings)")
+      ->check(CLI::Range(0, 256));
   cmd->callback([&ctx] { ctx.exit_code = run_planes(o); });
 }
 

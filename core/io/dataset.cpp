@@ -2,10 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "core/io/depth_png.h"
+#include "core/io/json_file.h"
 #include "core/io/read_options.h"
 #include "core/util/error.h"
 
@@ -143,42 +142,27 @@ DatasetFrameRef parse_frame(const Checker& c, const fs::path& root, const json& 
   return f;
 }
 
-json parse_json_file(const std::string& path) {
-  constexpr std::uintmax_t kMaxJsonBytes = 256u << 20;
-  std::error_code ec;
-  if (fs::file_size(path, ec) > kMaxJsonBytes || ec)
-    throw InputError(path, ec ? "cannot read: " + ec.message() : "file is too large for a dataset.json");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open for reading");
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return json::parse(text.str());
-  } catch (const json::exception& e) {
-    std::string msg = e.what();
-    for (char& ch : msg)
-      if (ch == '\n' || ch == '\r') ch = ' ';
-    throw InputError(path, "malformed JSON: " + msg);
-  }
-}
-
 }  // namespace
 
 Dataset read_dataset(const std::string& dir_or_json_path) {
   std::error_code ec;
   const fs::path given(dir_or_json_path);
-  if (!fs::exists(given, ec)) throw InputError(dir_or_json_path, "not found");
+  // exists() is false with an error for a symlink loop or a folder we may not enter.
+  if (!fs::exists(given, ec))
+    throw InputError(dir_or_json_path, ec ? "cannot access: " + ec.message() : "not found");
   const fs::path json_path = fs::is_directory(given, ec) ? given / "dataset.json" : given;
   if (!fs::exists(json_path, ec))
-    throw InputError(dir_or_json_path, "folder has no dataset.json");
+    throw InputError(dir_or_json_path, ec ? json_path.string() + ": cannot access: " + ec.message()
+                                          : "folder has no dataset.json");
 
   Dataset d;
   d.json_path = json_path.string();
   const fs::path root = fs::weakly_canonical(fs::absolute(json_path).parent_path(), ec);
+  if (ec) throw InputError(json_path.string(), "cannot resolve its folder: " + ec.message());
   d.dir = root.string();
   const Checker c(d.json_path);
 
-  d.raw = parse_json_file(d.json_path);
+  d.raw = read_json_file(d.json_path);
   const json& j = d.raw;
   if (!j.is_object()) c.fail("(top level)", "must be a JSON object");
   const std::string format = c.string(c.member(j, "format", "format"), "format");

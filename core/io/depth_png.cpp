@@ -29,6 +29,38 @@ std::string describe_png_type(const PngHeader& h) {
   return std::to_string(h.bit_depth) + "-bit " + name;
 }
 
+// The size in a JPEG's frame header (SOFn), read before OpenCV allocates anything: walk the
+// marker segments up to the first SOFn; InputError if there is none before the scan.
+void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path) {
+  std::size_t pos = 2;  // after SOI (FF D8)
+  while (pos + 4 <= b.size()) {
+    if (b[pos] != 0xff) break;
+    const std::uint8_t marker = b[pos + 1];
+    if (marker == 0xff) {  // fill byte
+      ++pos;
+      continue;
+    }
+    if (marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {  // no length
+      pos += 2;
+      continue;
+    }
+    if (marker == 0xda || marker == 0xd9) break;  // scan or end before any frame header
+    const std::size_t length = (std::size_t(b[pos + 2]) << 8) | b[pos + 3];
+    const bool sof = marker >= 0xc0 && marker <= 0xcf && marker != 0xc4 && marker != 0xc8 && marker != 0xcc;
+    if (sof) {
+      if (length < 7 || pos + 9 > b.size()) break;
+      const int h = (b[pos + 5] << 8) | b[pos + 6], w = (b[pos + 7] << 8) | b[pos + 8];
+      if (w == 0 || h == 0 || w > kMaxImageSide || h > kMaxImageSide)
+        throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
+                                   " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
+      return;
+    }
+    if (length < 2) break;
+    pos += 2 + length;
+  }
+  throw InputError(path, "corrupt JPEG: no frame header");
+}
+
 // Decodes an in-memory image, keeping its bit depth and channel count.
 cv::Mat decode(const std::vector<std::uint8_t>& bytes, const std::string& path) {
   cv::Mat img;
@@ -61,7 +93,7 @@ void require_png_end(const std::vector<std::uint8_t>& bytes, const std::string& 
 
 std::vector<std::uint8_t> read_file_bytes(const std::string& path, std::size_t max_bytes) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, "file not found");
+  if (!fs::exists(path, ec)) throw InputError(path, ec ? "cannot access: " + ec.message() : "file not found");
   if (fs::is_directory(path, ec)) throw InputError(path, "is a folder, expected a file");
   const auto size = fs::file_size(path, ec);
   if (ec) throw InputError(path, "cannot read: " + ec.message());
@@ -95,7 +127,11 @@ PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::st
 }
 
 DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  return decode_depth_png(read_file_bytes(path, kMaxImageFileBytes), path, opt);
+}
+
+DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                            const ReadOptions& opt) {
   const PngHeader header = parse_png_header(bytes, path);
   if (header.bit_depth != 16 || header.colour_type != 0)
     throw InputError(path, std::string(header.bit_depth == 8 ? "is an " : "is a ") +
@@ -124,11 +160,20 @@ DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt) {
 }
 
 std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  return decode_rgb_image(read_file_bytes(path, kMaxImageFileBytes), path, width, height);
+}
+
+std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                                           int& width, int& height) {
   const bool is_png = bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0;
+  const bool is_jpeg = bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+  // Only the two formats datasets use: OpenCV's other decoders (TIFF, EXR, ...) stay unreachable.
+  if (!is_png && !is_jpeg) throw InputError(path, "is neither a PNG nor a JPEG image");
   if (is_png) {
     parse_png_header(bytes, path);
     require_png_end(bytes, path);
+  } else {
+    check_jpeg_size(bytes, path);
   }
   const cv::Mat img = decode(bytes, path);
   if (img.type() != CV_8UC3)
@@ -147,7 +192,11 @@ std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, in
 }
 
 std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height) {
-  const std::vector<std::uint8_t> bytes = read_file_bytes(path, kMaxImageFileBytes);
+  return decode_label_png(read_file_bytes(path, kMaxImageFileBytes), path, width, height);
+}
+
+std::vector<std::uint16_t> decode_label_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                                            int& width, int& height) {
   const PngHeader header = parse_png_header(bytes, path);
   require_png_end(bytes, path);
   const cv::Mat img = decode(bytes, path);

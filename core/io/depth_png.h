@@ -30,10 +30,18 @@ std::vector<std::uint8_t> read_file_bytes(const std::string& path, std::size_t m
 // else PrimeSense VGA scaled to the image size. `source` = path.
 DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt);
 
+// The same from the file's bytes (the fuzzer's entry point); `path` is named in errors.
+DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                            const ReadOptions& opt);
+
 // Reads an 8-bit colour PNG/JPEG as RGB8 row-major; throws InputError otherwise.
 std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height);
+std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                                           int& width, int& height);
 
 // Reads a 16-bit single-channel label PNG (e.g. ground-truth surface ids).
 std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height);
+std::vector<std::uint16_t> decode_label_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
+                                            int& width, int& height);
 
 }  // namespace tunnelmap

@@ -95,7 +95,7 @@ void register_frame_source(const std::string& extension, FrameSourceFactory fact
 std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOptions& opt) {
   std::error_code ec;
   if (input.empty()) throw InputError("", "no input given");
-  if (!fs::exists(input, ec)) throw InputError(input, "not found");
+  if (!fs::exists(input, ec)) throw InputError(input, ec ? "cannot access: " + ec.message() : "not found");
   if (fs::is_directory(input, ec)) {
     if (!fs::exists(fs::path(input) / "dataset.json", ec))
       throw InputError(input, "folder has no dataset.json (expected a dataset folder)");

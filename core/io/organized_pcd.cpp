@@ -39,6 +39,12 @@ void check_fields(const std::string& path, const PcdHeader& h) {
     throw InputError(path, "is not organised (height " + std::to_string(h.height) +
                                "); an organised PCD from a depth camera is required");
   if (!has("x") || !has("y") || !has("z")) throw InputError(path, "has no x, y, z fields");
+  // PCL silently leaves fields of another type at 0: refuse them instead.
+  for (std::size_t i = 0; i < h.fields.size(); ++i) {
+    const std::string& f = h.fields[i];
+    if ((f == "x" || f == "y" || f == "z") && (h.types[i] != 'F' || h.sizes[i] != 4 || h.counts[i] != 1))
+      throw InputError(path, "field '" + f + "' must be a single 32-bit float (TYPE F, SIZE 4, COUNT 1)");
+  }
 }
 
 }  // namespace

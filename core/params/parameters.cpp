@@ -1,5 +1,7 @@
 #include "core/params/parameters.h"
 
+#include "core/io/json_file.h"
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -110,15 +112,8 @@ void Parameters::apply_json(const nlohmann::json& j, const std::string& source) 
 }
 
 void Parameters::load_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "cannot open parameter file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path, std::string("malformed JSON: ") + e.what());
-  }
-  apply_json(j, path);
+  // read_json_file turns every JSON problem (also number overflow, "1e999") into one InputError.
+  apply_json(read_json_file(path), path);
 }
 
 nlohmann::json Parameters::to_json() const {

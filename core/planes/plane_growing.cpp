@@ -14,9 +14,10 @@ namespace {
 
 // Fills the segment's statistics from its eq. 4 model. Area: each pixel's footprint on the
 // plane is z^3 / (fx fy |n.p|), and n.p = -offset on the plane.
-PlaneSegment make_segment(int id, const PlaneModel& model, const GrowOptions& options, double fxfy) {
-  PlaneSegment plane;
+// `plane` may be a reused slot: everything is overwritten, the contour's storage is kept.
+void fill_segment(PlaneSegment& plane, int id, const PlaneModel& model, const GrowOptions& options, double fxfy) {
   plane.id = id;
+  plane.contour.clear();
   plane.points = static_cast<int>(model.count());
   plane.centroid = model.mean_point();
   plane.mean_normal = model.mean_normal().normalized();
@@ -26,20 +27,16 @@ PlaneSegment make_segment(int id, const PlaneModel& model, const GrowOptions& op
   plane.normal = options.refit_normal ? lsq : plane.mean_normal;
   plane.offset_m = -plane.normal.dot(plane.centroid);
   plane.area_m2 = std::abs(plane.offset_m) > 1e-9 ? model.sum_z_cubed() / (fxfy * std::abs(plane.offset_m)) : 0.0;
-  return plane;
 }
-
-}  // namespace
-
-namespace {
 
 // PG&C growing over every pixel of `cloud`: planes, labels and bounding boxes, no contours.
 void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out) {
   out.width = cloud.width;
   out.height = cloud.height;
-  out.planes.clear();
+  std::size_t kept = 0;  // out.planes' slots are reused frame after frame (no reallocation)
   const std::size_t n = static_cast<std::size_t>(cloud.width) * cloud.height;
   if (cloud.normals.size() != n || cloud.points.size() != n || n == 0) {
+    out.planes.clear();
     out.labels.assign(n, 0);
     return;
   }
@@ -53,17 +50,20 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
       PlaneModel model;
       if (!grower.seed(u, v, model)) continue;
       grower.grow(u, v, next_id, model);  // `model` already holds the seed block
-      PlaneSegment plane = make_segment(next_id, model, options, fxfy);
+      if (kept == out.planes.size()) out.planes.emplace_back();
+      PlaneSegment& plane = out.planes[kept];
+      fill_segment(plane, next_id, model, options, fxfy);
       if (plane.points < options.min_points || plane.area_m2 < options.min_area_m2) {
-        grower.release();
+        grower.release();  // the slot is reused by the next region
         continue;
       }
       plane.bbox_u0 = grower.bbox_u0, plane.bbox_v0 = grower.bbox_v0;
       plane.bbox_u1 = grower.bbox_u1, plane.bbox_v1 = grower.bbox_v1;
-      out.planes.push_back(std::move(plane));
+      ++kept;
       ++next_id;
     }
   }
+  out.planes.resize(kept);
   grower.export_labels(out.labels);
 }
 
@@ -93,7 +93,7 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
     // Each sample stands for step^2 pixels; the full-resolution minimum is enforced after refinement.
     coarse_options.min_points = std::max(4, options.min_points / (step * step));
     grow_planes(coarse, coarse_options, out);
-    coarse_labels = out.labels;
+    coarse_labels.assign(out.labels.begin(), out.labels.end());
   }
   {
     StageTimer refine_timer(out.timings_ms, "refine");
@@ -104,12 +104,13 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
     // coarse intrinsics map a sample's pixel to the same ray as its full-resolution pixel.
     StageTimer contour_timer(out.timings_ms, "contours");
     for (PlaneSegment& plane : out.planes) {
-      PlaneSegment coarse_plane = plane;  // bbox in grid coordinates, same id and plane
-      coarse_plane.bbox_u0 = plane.bbox_u0 / step, coarse_plane.bbox_v0 = plane.bbox_v0 / step;
-      coarse_plane.bbox_u1 = std::min(coarse.width - 1, (plane.bbox_u1 + step - 1) / step);
-      coarse_plane.bbox_v1 = std::min(coarse.height - 1, (plane.bbox_v1 + step - 1) / step);
-      compute_contour(coarse_labels, coarse.width, coarse.intrinsics, coarse_plane);
-      plane.contour.swap(coarse_plane.contour);
+      // Trace with the bounding box in grid coordinates, then restore the full-resolution box.
+      const int u0 = plane.bbox_u0, v0 = plane.bbox_v0, u1 = plane.bbox_u1, v1 = plane.bbox_v1;
+      plane.bbox_u0 = u0 / step, plane.bbox_v0 = v0 / step;
+      plane.bbox_u1 = std::min(coarse.width - 1, (u1 + step - 1) / step);
+      plane.bbox_v1 = std::min(coarse.height - 1, (v1 + step - 1) / step);
+      compute_contour(coarse_labels, coarse.width, coarse.intrinsics, plane);
+      plane.bbox_u0 = u0, plane.bbox_v0 = v0, plane.bbox_u1 = u1, plane.bbox_v1 = v1;
     }
   }
 }

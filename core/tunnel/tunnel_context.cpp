@@ -8,8 +8,10 @@
 namespace tunnelmap {
 
 namespace {
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
+double median(const std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  thread_local std::vector<double> v;  // scratch: no allocation per frame in the steady state
+  v.assign(values.begin(), values.end());
   const size_t mid = v.size() / 2;
   std::nth_element(v.begin(), v.begin() + mid, v.end());
   const double hi = v[mid];
@@ -21,8 +23,14 @@ double median(std::vector<double> v) {
 
 void TunnelContext::accept(const TunnelMap& map) {
   if (!map.detected) return;  // only detected maps define the context
-  widths_.push_back(map.width_m);
-  heights_.push_back(map.height_m);
+  if (widths_.size() < kWindow) {
+    widths_.push_back(map.width_m);
+    heights_.push_back(map.height_m);
+    return;
+  }
+  widths_[next_] = map.width_m;
+  heights_[next_] = map.height_m;
+  next_ = (next_ + 1) % kWindow;
 }
 
 double TunnelContext::width_m() const { return median(widths_); }

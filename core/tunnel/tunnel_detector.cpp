@@ -201,25 +201,10 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
                                      opt.height_min_m, opt.height_max_m));
     return;
   }
-  if (context && !context->empty()) {
-    const double dw = map.width_m - context->width_m();
-    const double dh = map.height_m - context->height_m();
-    if (std::abs(dw) > opt.context_tolerance_m) {
-      fail(map, "inconsistent_with_context",
-           fmt("width %.3f m differs from the context's %.3f m by more than %.0f mm", map.width_m,
-               context->width_m(), opt.context_tolerance_m * 1000.0));
-      return;
-    }
-    if (std::abs(dh) > opt.context_tolerance_m) {
-      fail(map, "inconsistent_with_context",
-           fmt("height %.3f m differs from the context's %.3f m by more than %.0f mm",
-               map.height_m, context->height_m(), opt.context_tolerance_m * 1000.0));
-      return;
-    }
-  }
   map.detected = true;
   map.status = "ok";
   map.reason = fmt("width %.3f m, height %.3f m", map.width_m, map.height_m);
+  if (context) apply_tunnel_context(map, opt, *context);
 }
 
 }  // namespace
@@ -236,6 +221,21 @@ TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_c
     run(planes, up_camera, options, context, map);
   }
   return map;
+}
+
+void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const TunnelContext& context) {
+  if (!map.detected || context.empty()) return;
+  const double dw = map.width_m - context.width_m();
+  const double dh = map.height_m - context.height_m();
+  if (std::abs(dw) > opt.context_tolerance_m) {
+    fail(map, "inconsistent_with_context",
+         fmt("width %.3f m differs from the context's %.3f m by more than %.0f mm", map.width_m,
+             context.width_m(), opt.context_tolerance_m * 1000.0));
+  } else if (std::abs(dh) > opt.context_tolerance_m) {
+    fail(map, "inconsistent_with_context",
+         fmt("height %.3f m differs from the context's %.3f m by more than %.0f mm", map.height_m,
+             context.height_m(), opt.context_tolerance_m * 1000.0));
+  }
 }
 
 }  // namespace tunnelmap

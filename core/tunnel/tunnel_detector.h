@@ -29,19 +29,31 @@ struct TunnelOptions {
 // it within context_tolerance_m.
 class TunnelContext {
  public:
+  // The context is the last kWindow accepted scans: bounded memory and time per frame on
+  // hours-long streams (the robot moves on; old scans say least about the tunnel here).
+  static constexpr std::size_t kWindow = 1000;
+
   void accept(const TunnelMap& map);
   bool empty() const { return widths_.empty(); }
   double width_m() const;   // median of accepted widths
   double height_m() const;  // median of accepted heights
-  void clear() { widths_.clear(); heights_.clear(); }
+  void clear() { widths_.clear(), heights_.clear(), next_ = 0; }
 
  private:
-  std::vector<double> widths_, heights_;
+  std::vector<double> widths_, heights_;  // ring buffers once kWindow scans were accepted
+  std::size_t next_ = 0;                  // slot the next scan replaces when full
 };
 
 // `up_camera`: unit vector towards the roof, in the camera frame. Everything in the returned map
 // is in the camera frame. `context` may be null (single frame).
 TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                         const TunnelOptions& options, const TunnelContext* context);
+
+// The context check of step 5 alone, for a map detected without a context: a detected map whose
+// width or height differs from the context's by more than context_tolerance_m becomes
+// "inconsistent_with_context"; anything else is left unchanged. detect_tunnel(..., context)
+// equals detect_tunnel(..., nullptr) followed by this, which lets a sequence detect frames in
+// parallel and apply the order-dependent context in frame order (core/pipeline/sequence_runner.h).
+void apply_tunnel_context(TunnelMap& map, const TunnelOptions& options, const TunnelContext& context);
 
 }  // namespace tunnelmap

@@ -1,7 +1,7 @@
 // libTunnelMapSim.so.0: an OpenNI2 driver module presenting the project's tunnel simulator as a
-// PrimeSense-class camera (VGA depth in mm at 30 fps + registered RGB888), so that the whole
-// OpenNI2 stack (enumeration, streams, Recorder, OniFile playback) can be tested without
-// hardware. Protocol (URIs, pose command): sim_driver_protocol.h.
+// PrimeSense-class camera (VGA depth in mm at 30 fps + registered RGB888; faster for soak tests),
+// so that the whole OpenNI2 stack (enumeration, streams, Recorder, OniFile playback) can be
+// tested without hardware. Protocol (URIs, pose command): sim_driver_protocol.h.
 #define XN_NEW(type, arg) new type(arg)
 #define XN_DELETE(p) delete (p)
 #include <Driver/OniDriverAPI.h>
@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -35,6 +36,7 @@ struct SimDeviceOptions {
   bool color = true;
   unsigned seed = 1;
   int frames = 0;  // frame cycle length; 0 = the preset's
+  int fps = kFps;  // frames sent per second; 0 = paced by the client (see run())
 };
 
 // Parses "tunnelmap-sim://PRESET?k=v&...". False for anything else (other drivers' URIs).
@@ -62,6 +64,7 @@ bool parse_uri(const std::string& uri, SimDeviceOptions& o) {
     else if (k == "color") o.color = n != 0;
     else if (k == "seed") o.seed = static_cast<unsigned>(n);
     else if (k == "frames" && n >= 1 && n <= 300) o.frames = static_cast<int>(n);
+    else if (k == "fps" && n >= 0 && n <= 1000) o.fps = static_cast<int>(n);
     else return false;
     if (amp == std::string::npos) break;
     pos = amp + 1;
@@ -247,7 +250,11 @@ class SimDevice : public oni::driver::DeviceBase {
     thread_ = std::thread([this] { run(); });
   }
   ~SimDevice() override {
-    quit_ = true;
+    {
+      std::lock_guard<std::mutex> lock(ack_mutex_);
+      quit_ = true;
+    }
+    ack_cv_.notify_all();
     thread_.join();
   }
 
@@ -309,6 +316,12 @@ class SimDevice : public oni::driver::DeviceBase {
     if (id != simdriver::kCommandFramePose || size != sizeof(simdriver::FramePoseRequest))
       return ONI_STATUS_NOT_SUPPORTED;
     auto* r = static_cast<simdriver::FramePoseRequest*>(data);
+    if (r->frame_index < 0) return ONI_STATUS_BAD_PARAMETER;
+    {
+      std::lock_guard<std::mutex> lock(ack_mutex_);
+      asked_ = std::max(asked_, r->frame_index);
+    }
+    ack_cv_.notify_all();
     const Eigen::Matrix4d T = sim_.pose(r->frame_index % sim_.frame_count()).matrix();
     std::memcpy(r->camera_to_world, T.data(), sizeof r->camera_to_world);
     r->world_up[0] = 0, r->world_up[1] = 0, r->world_up[2] = 1;
@@ -321,6 +334,7 @@ class SimDevice : public oni::driver::DeviceBase {
   // Renders the frame cycle, then sends one of its frames per tick while any stream runs (a
   // stream started earlier waits for the cycle); the simulator's frames repeat with its period.
   void run();
+  bool wait_until_read(int index);  // fps=0; false when the device closes
 
   SimDriver* driver_;
   OniDeviceInfo info_;
@@ -332,6 +346,10 @@ class SimDevice : public oni::driver::DeviceBase {
   std::mutex mutex_;
   std::vector<SimStream*> streams_;
   std::shared_ptr<const FrameCycle> cycle_;  // frame k of the simulator, ready to send (run())
+  // fps=0: the newest frame index whose pose the client asked for (it has read that frame).
+  std::mutex ack_mutex_;
+  std::condition_variable ack_cv_;
+  int asked_ = -1;
   std::atomic<bool> quit_{false};
   std::thread thread_;
 };
@@ -397,9 +415,21 @@ class SimDriver : public oni::driver::DriverBase {
   std::map<std::string, OniDeviceInfo> infos_;
 };
 
+// fps=0 sends frame k+1 once the client asked for the pose of frame k (LiveDevice::read does for
+// every frame it reads): OpenNI2 keeps only a stream's newest frame, so a timer-paced camera
+// loses frames whenever the reader is slower, while this one never does and runs as fast as the
+// reader (soak tests, however slow the reader: no time-out, or a slow reader would lose frames
+// again). A client that never asks gets the first frame only.
+bool SimDevice::wait_until_read(int index) {
+  std::unique_lock<std::mutex> lock(ack_mutex_);
+  ack_cv_.wait(lock, [&] { return quit_ || asked_ >= index; });
+  return !quit_;
+}
+
 void SimDevice::run() {
   using clock = std::chrono::steady_clock;
-  const auto period = std::chrono::microseconds(1000000 / kFps);
+  const bool paced_by_client = options_.fps == 0;
+  const auto period = std::chrono::microseconds(1000000 / std::max(1, options_.fps));
   auto next = clock::now();
   int index = 0, emitted = 0;
   bool unplugged = false;
@@ -417,9 +447,13 @@ void SimDevice::run() {
       next = clock::now();
       continue;
     }
-    std::this_thread::sleep_until(next);
-    next += period;
-    if (clock::now() > next + 3 * period) next = clock::now();  // fell behind: do not burst
+    if (paced_by_client) {
+      if (index > 0 && !wait_until_read(index - 1)) break;
+    } else {
+      std::this_thread::sleep_until(next);
+      next += period;
+      if (clock::now() > next + 3 * period) next = clock::now();  // fell behind: do not burst
+    }
     const WireFrame& frame = (*cycle_)[static_cast<std::size_t>(index % sim_.frame_count())];
     {
       std::lock_guard<std::mutex> lock(mutex_);

@@ -10,6 +10,12 @@
 //   seed=S              simulator seed
 //   frames=N            length of the simulator's frame cycle (1..300, default the preset's 30;
 //                       the cycle is rendered before the first frame, so short cycles start fast)
+//   fps=F               frames sent per second, 1..1000 (default 30); fps=0: paced by the client,
+//                       frame k+1 is sent once the client asked the pose of frame k
+//                       (kCommandFramePose, which LiveDevice::read does for every frame), so no
+//                       frame is lost and the camera runs as fast as its reader (soak tests); a
+//                       client that never asks gets the first frame only. Either way the video
+//                       mode and the frame timestamps stay the nominal 30 fps (index / 30 s).
 // The driver lists "tunnelmap-sim://lab" and "tunnelmap-sim://field"; any other URI of this
 // scheme is opened on demand (OpenNI2 asks the driver through tryDevice).
 namespace tunnelmap::simdriver {
