@@ -52,8 +52,12 @@ OniFileSource::~OniFileSource() = default;
 
 std::unique_ptr<OniFileSource::Player> OniFileSource::open_player() const {
   auto p = std::make_unique<Player>();
-  if (p->device.open(path_.c_str()) != openni::STATUS_OK)
-    throw InputError(path_, "not a readable OpenNI2 recording (" + last_error() + ")");
+  if (p->device.open(path_.c_str()) != openni::STATUS_OK) {
+    // OpenNI2's player gives no reason for a truncated file; say what it most likely is.
+    const std::string why = last_error();
+    throw InputError(path_, "not a readable OpenNI2 recording (" +
+                                (why.empty() ? std::string("truncated or corrupt file") : why) + ")");
+  }
   openni::PlaybackControl* playback = p->device.getPlaybackControl();
   if (playback == nullptr) throw InputError(path_, "not an OpenNI2 recording");
   if (!p->device.hasSensor(openni::SENSOR_DEPTH) || p->depth.create(p->device, openni::SENSOR_DEPTH) != openni::STATUS_OK)
