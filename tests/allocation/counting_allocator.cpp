@@ -7,13 +7,7 @@
 #include <cstddef>
 #include <new>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define TUNNELMAP_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define TUNNELMAP_SANITIZED 1
-#endif
-#endif
+#include "tests/allocation/sanitizer_detect.h"
 
 #ifdef TUNNELMAP_SANITIZED
 #define TUNNELMAP_ALLOC_COUNTING 0

@@ -5,13 +5,7 @@
 #include <errno.h>
 #include <stddef.h>
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define TUNNELMAP_SANITIZED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
-#define TUNNELMAP_SANITIZED 1
-#endif
-#endif
+#include "tests/allocation/sanitizer_detect.h"
 
 #ifndef TUNNELMAP_SANITIZED  /* the sanitizer's allocator must stay in charge */
 
