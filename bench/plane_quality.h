@@ -9,12 +9,15 @@
 
 namespace tunnelmap::bench {
 
-// A plane is correct when a majority (> 50 %) of its pixels lie on one true surface; a true
-// surface of >= 3000 px (~1 % of VGA, the evaluation's minimum) is found when a correct plane
-// lies on it. recall = found / counted surfaces, precision = correct / all planes.
+// Issue 7's definition. A true surface counts when its visible part (pixels with a 3-D point
+// inside the default cloud range) has at least grow.min_points pixels (40) and an area of at
+// least grow.min_area_m2 (0.004 m^2) on the surface -- PG&C's own minimum plane size, from the
+// GrowOptions defaults. A detected plane is correct when more than 50 % of its pixels lie on
+// one true surface, and that surface is then found. recall = found / counted surfaces,
+// precision = correct / all planes.
 SegmentationOptions bench_scoring();
 
-// Sets "planes" always, and "recall" / "precision" on simulated frames.
+// Sets "planes" always, and "recall" / "precision" / "true_surfaces" on simulated frames.
 void set_plane_counters(benchmark::State& state, const NamedFrame& frame, const PlaneSegments& planes);
 
 }  // namespace tunnelmap::bench

@@ -11,10 +11,10 @@ from collections import OrderedDict
 
 # (column title, benchmark family) for the peer table; the first is the reference.
 PEERS = [
-    ("TunnelMap plane extraction", "BM_PlaneExtraction"),
-    ("TunnelMap detection", "BM_Detection"),
-    ("TunnelMap fast path (grid step 2) plane extraction", "BM_PlaneExtractionFast"),
-    ("TunnelMap fast path detection", "BM_DetectionFast"),
+    ("TunnelMap plane extraction (default, grid step 2)", "BM_PlaneExtraction"),
+    ("TunnelMap detection (default)", "BM_Detection"),
+    ("TunnelMap every-pixel plane extraction (grid step 1)", "BM_PlaneExtractionEveryPixel"),
+    ("TunnelMap every-pixel detection", "BM_DetectionEveryPixel"),
     ("PCL IINE + OMPS", "BM_PclTotal"),
     ("OpenCV FALS + RgbdPlane", "BM_OpenCvTotal_FALS"),
     ("OpenCV FALS + RgbdPlane incl. depthTo3d", "BM_OpenCvTotalWithCloud_FALS"),

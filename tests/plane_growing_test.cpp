@@ -182,9 +182,10 @@ TEST(PlaneGrowingFastPath, GridStepTwoFindsThePlanesOfTheFullGrowing) {
   // coarse grid with the same orientation and offset and nearly the same pixel count.
   const Eigen::Vector3d mn(-1.5, -1.2, -1.0), mx(1.5, 1.2, 1.4);
   const auto s = render_planes(box_room(mn, mx), look_at({-0.6, 0.4, 0.3}, {1.5, -1.2, -1.0}), mn, mx, 0.001, 5);
-  GrowOptions fast;
+  GrowOptions every_pixel, fast;
+  every_pixel.grid_step = 1;
   fast.grid_step = 2;
-  const PlaneSegments exact = run_pgc(s.frame), coarse = run_pgc(s.frame, fast);
+  const PlaneSegments exact = run_pgc(s.frame, every_pixel), coarse = run_pgc(s.frame, fast);
   int compared = 0;
   for (const PlaneSegment& e : exact.planes) {
     if (e.points < 5000) continue;

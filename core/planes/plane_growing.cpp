@@ -6,28 +6,13 @@
 #include "core/planes/plane_contour.h"
 #include "core/planes/plane_model.h"
 #include "core/planes/plane_refinement.h"
+#include "core/planes/plane_slots.h"
 #include "core/planes/region_grower.h"
+#include "core/planes/segment_statistics.h"
 
 namespace tunnelmap {
 
 namespace {
-
-// Fills the segment's statistics from its eq. 4 model. Area: each pixel's footprint on the
-// plane is z^3 / (fx fy |n.p|), and n.p = -offset on the plane.
-// `plane` may be a reused slot: everything is overwritten, the contour's storage is kept.
-void fill_segment(PlaneSegment& plane, int id, const PlaneModel& model, const GrowOptions& options, double fxfy) {
-  plane.id = id;
-  plane.contour.clear();
-  plane.points = static_cast<int>(model.count());
-  plane.centroid = model.mean_point();
-  plane.mean_normal = model.mean_normal().normalized();
-  double rms = 0;
-  const Eigen::Vector3d lsq = model.least_squares_normal(&rms);
-  plane.rms_m = rms;
-  plane.normal = options.refit_normal ? lsq : plane.mean_normal;
-  plane.offset_m = -plane.normal.dot(plane.centroid);
-  plane.area_m2 = std::abs(plane.offset_m) > 1e-9 ? model.sum_z_cubed() / (fxfy * std::abs(plane.offset_m)) : 0.0;
-}
 
 // PG&C growing over every pixel of `cloud`: planes, labels and bounding boxes, no contours.
 void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out) {
@@ -50,9 +35,10 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
       PlaneModel model;
       if (!grower.seed(u, v, model)) continue;
       grower.grow(u, v, next_id, model);  // `model` already holds the seed block
-      if (kept == out.planes.size()) out.planes.emplace_back();
+      if (kept == out.planes.size()) add_plane_slot(out.planes);
       PlaneSegment& plane = out.planes[kept];
-      fill_segment(plane, next_id, model, options, fxfy);
+      plane.id = next_id;
+      fill_segment_statistics(plane, model, options, fxfy);
       if (plane.points < options.min_points || plane.area_m2 < options.min_area_m2) {
         grower.release();  // the slot is reused by the next region
         continue;
@@ -63,7 +49,7 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
       ++next_id;
     }
   }
-  out.planes.resize(kept);
+  shrink_plane_slots(out.planes, kept);
   grower.export_labels(out.labels);
 }
 
@@ -93,11 +79,10 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
     // Each sample stands for step^2 pixels; the full-resolution minimum is enforced after refinement.
     coarse_options.min_points = std::max(4, options.min_points / (step * step));
     grow_planes(coarse, coarse_options, out);
-    coarse_labels.assign(out.labels.begin(), out.labels.end());
   }
   {
     StageTimer refine_timer(out.timings_ms, "refine");
-    refine_to_full_resolution(cloud, step, options, out);
+    refine_to_full_resolution(cloud, step, options, out, coarse_labels);
   }
   if (options.compute_contours) {
     // The outline at the growing grid's resolution (step times fewer pixels to trace); the

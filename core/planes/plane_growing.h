@@ -13,7 +13,7 @@ struct GrowOptions {
   int min_points = 40;
   double min_area_m2 = 0.004;
   bool refit_normal = true;             // report the least-squares normal of the grown points
-  int grid_step = 1;                    // grow on every k-th pixel, then assign the rest (1 = every pixel)
+  int grid_step = 2;                    // grow on every k-th pixel, then assign the rest (1 = every pixel, the paper)
   bool compute_contours = true;
 };
 

@@ -24,6 +24,15 @@ class PlaneModel {
     sum_z3_ += z * z * z;
   }
 
+  // Adds another model's points (the model of the union of both point sets).
+  void merge(const PlaneModel& o) {
+    count_ += o.count_;
+    sum_p_ += o.sum_p_;
+    sum_n_ += o.sum_n_;
+    for (int k = 0; k < 6; ++k) sum_pp_[k] += o.sum_pp_[k];
+    sum_z3_ += o.sum_z3_;
+  }
+
   long count() const { return count_; }
   const Eigen::Vector3d& sum_point() const { return sum_p_; }    // N p*_N
   const Eigen::Vector3d& sum_normal() const { return sum_n_; }   // N n*_N

@@ -4,6 +4,9 @@
 #include <cmath>
 
 #include "core/planes/plane_growing.h"
+#include "core/planes/plane_model.h"
+#include "core/planes/plane_slots.h"
+#include "core/planes/segment_statistics.h"
 
 namespace tunnelmap {
 
@@ -39,19 +42,18 @@ struct PlaneTest {
 }  // namespace
 
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
-                               PlaneSegments& planes) {
+                               PlaneSegments& planes, std::vector<std::int32_t>& coarse) {
   const int w = full.width, h = full.height;
   const int cw = planes.width, ch = planes.height;
   const float eps = static_cast<float>(options.distance_m);
   const float cos_angle = static_cast<float>(std::cos(options.angle_deg * M_PI / 180.0));
 
   thread_local std::vector<PlaneTest> tests;
-  thread_local std::vector<std::int32_t> coarse;
-  thread_local std::vector<double> z3;
-  thread_local std::vector<int> count, u0, v0, u1, v1, col0, col1;
+  thread_local std::vector<PlaneModel> models;  // the full-resolution members' eq. 4 sums
+  thread_local std::vector<int> u0, v0, u1, v1, col0, col1;
   const std::size_t k = planes.planes.size() + 1;  // indexed by plane id (1-based)
   tests.assign(k, PlaneTest{});
-  z3.assign(k, 0.0), count.assign(k, 0);
+  models.assign(k, PlaneModel{});
   u0.assign(k, w), v0.assign(k, h), u1.assign(k, -1), v1.assign(k, -1);
   for (const PlaneSegment& p : planes.planes) {
     PlaneTest& t = tests[p.id];
@@ -59,7 +61,9 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     t.nz = static_cast<float>(p.mean_normal.z());
     t.d = static_cast<float>(p.mean_normal.dot(p.centroid));
   }
-  coarse.swap(planes.labels);  // coarse labels in, full-resolution labels out
+  // Coarse labels in, full-resolution labels out (copied, not swapped: each buffer keeps its
+  // capacity, so no allocation per frame).
+  coarse.assign(planes.labels.begin(), planes.labels.end());
   planes.labels.assign(static_cast<std::size_t>(w) * h, 0);
   planes.width = w, planes.height = h;
 
@@ -74,6 +78,18 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     const std::int32_t* r0 = coarse.data() + static_cast<std::size_t>(cv0) * cw;
     const std::int32_t* r1 = coarse.data() + static_cast<std::size_t>(cv1) * cw;
     std::int32_t* out = planes.labels.data() + static_cast<std::size_t>(v) * w;
+    // Consecutive pixels of a row mostly join the same plane: their sums collect in a local
+    // model (registers) and reach the plane's model once per run, not once per pixel.
+    PlaneModel run;
+    std::int32_t run_label = 0;
+    int run_u0 = 0, run_u1 = 0;
+    const auto flush = [&]() {
+      if (!run_label) return;
+      models[run_label].merge(run);
+      u0[run_label] = std::min(u0[run_label], run_u0), u1[run_label] = std::max(u1[run_label], run_u1);
+      v0[run_label] = std::min(v0[run_label], v), v1[run_label] = std::max(v1[run_label], v);
+      run = PlaneModel();
+    };
     for (int u = 0; u < w; ++u) {
       const int cu0 = col0[u], cu1 = col1[u];
       // Candidate planes: the four surrounding samples; most pixels see only one plane. Where
@@ -93,28 +109,52 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
       }
       if (!label) continue;
       out[u] = label;
-      ++count[label];
-      z3[label] += static_cast<double>(p[2]) * p[2] * p[2];
-      u0[label] = std::min(u0[label], u), u1[label] = std::max(u1[label], u);
-      v0[label] = std::min(v0[label], v), v1[label] = std::max(v1[label], v);
+      if (label != run_label) {
+        flush();
+        run_label = label, run_u0 = u;
+      }
+      run_u1 = u;
+      run.add(Eigen::Vector3f(p[0], p[1], p[2]), Eigen::Vector3f(n[0], n[1], n[2]));
     }
+    flush();
   }
 
   const double fxfy = full.intrinsics.fx * full.intrinsics.fy;
-  bool dropped = false;
+  // Planes below the minimum size at full resolution are dropped and the rest renumbered
+  // 1..N in order, so ids stay equal to the label image's values and contiguous.
+  thread_local std::vector<std::int32_t> new_id;
+  new_id.assign(k, 0);
+  std::int32_t next = 1;
+  bool renumber = false;
   for (PlaneSegment& p : planes.planes) {
-    p.points = count[p.id];
-    p.area_m2 = std::abs(p.offset_m) > 1e-9 ? z3[p.id] / (fxfy * std::abs(p.offset_m)) : 0.0;
+    // Every reported quantity from the full-resolution members: four times the points of the
+    // grid, so the centroid (and with it the zone offsets) is as precise as every-pixel growing.
+    const PlaneModel& m = models[p.id];
+    if (m.count() >= 3) {
+      fill_segment_statistics(p, m, options, fxfy);
+    } else {
+      p.points = static_cast<int>(m.count());
+      p.area_m2 = 0.0;
+    }
     p.bbox_u0 = u0[p.id], p.bbox_v0 = v0[p.id], p.bbox_u1 = u1[p.id], p.bbox_v1 = v1[p.id];
-    // The minimum size applies at full resolution too.
-    if (p.points < options.min_points || p.area_m2 < options.min_area_m2) dropped = true, count[p.id] = -1;
+    if (p.points < options.min_points || p.area_m2 < options.min_area_m2) continue;
+    new_id[p.id] = next++;
+    renumber |= new_id[p.id] != p.id;
   }
-  if (!dropped) return;
-  planes.planes.erase(std::remove_if(planes.planes.begin(), planes.planes.end(),
-                                     [&](const PlaneSegment& p) { return count[p.id] < 0; }),
-                      planes.planes.end());
+  if (!renumber && static_cast<std::size_t>(next - 1) == planes.planes.size()) return;
+  // Compact in place, moving kept planes forward (their slots' contour storage travels along).
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < planes.planes.size(); ++i) {
+    const std::int32_t id = new_id[planes.planes[i].id];
+    if (!id) continue;
+    if (kept != i) std::swap(planes.planes[kept], planes.planes[i]);
+    planes.planes[kept++].id = id;
+  }
+  shrink_plane_slots(planes.planes, kept);
   for (std::int32_t& l : planes.labels)
-    if (l > 0 && count[l] < 0) l = 0;
+    if (l > 0) l = new_id[l];
+  for (std::int32_t& l : coarse)
+    if (l > 0) l = new_id[l];
 }
 
 }  // namespace tunnelmap

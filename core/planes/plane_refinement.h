@@ -17,10 +17,11 @@ struct GrowOptions;
 void subsample_cloud(const OrganizedCloud& full, int step, OrganizedCloud& coarse);
 
 // `planes` holds the planes grown on the `step` grid with their coarse label image; on return
-// its labels are full resolution and each plane's points, area and bounding box are counted
-// at full resolution. Centroid, normals and RMS stay those of the grown samples (an unbiased
-// subsample of the same surface).
+// its labels are full resolution and every reported quantity (points, area, centroid, normals,
+// offset, RMS, bounding box) is that of the full-resolution members. Planes below the minimum
+// size at full resolution are dropped and the rest renumbered 1..N; `coarse` receives the grid's
+// label image with the same ids (for tracing contours at the grid's resolution).
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
-                               PlaneSegments& planes);
+                               PlaneSegments& planes, std::vector<std::int32_t>& coarse);
 
 }  // namespace tunnelmap

@@ -23,6 +23,10 @@ struct NormalClassStats {
 // empty bin after the heaviest one, never beyond `max_deg`; recompute the weighted mean.
 NormalClassStats reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
                                         double max_deg);
+// The same, written into `out`: reuses out.inlier's buffer, so a detector calling it every frame
+// with the same `out` allocates nothing in the steady state.
+void reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
+                            double max_deg, NormalClassStats& out);
 
 double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b);  // unit vectors
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -10,10 +12,11 @@
 namespace tunnelmap {
 
 namespace {
-std::string fmt(const char* f, double a, double b) {
+// snprintf into `out`, reusing its buffer (a returned std::string would allocate every time).
+void set_text(std::string& out, const char* f, double a, double b) {
   char buf[200];
   std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
+  out.assign(buf);
 }
 }  // namespace
 
@@ -22,19 +25,35 @@ TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eige
                                        const Eigen::Vector3d& camera_forward,
                                        double max_pair_angle_deg) {
   TemplateFrame t;
+  fit_rectangular_template(n_left, n_right, n_top, n_bottom, camera_forward, max_pair_angle_deg, t);
+  return t;
+}
+
+void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector3d& n_right,
+                              const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
+                              const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
+                              TemplateFrame& t) {
+  {  // Default values in every field, but the strings keep their buffers.
+    TemplateFrame fresh;
+    fresh.status.swap(t.status);
+    fresh.reason.swap(t.reason);
+    fresh.status.clear();
+    fresh.reason.clear();
+    t = std::move(fresh);
+  }
   t.left_right_angle_deg = angle_deg(n_left, -n_right);
   t.top_bottom_angle_deg = angle_deg(n_bottom, -n_top);
   if (t.left_right_angle_deg > max_pair_angle_deg) {
     t.status = "no_parallel_pair";
-    t.reason = fmt("left and right walls are %.1f deg from parallel (max %.1f)",
-                   t.left_right_angle_deg, max_pair_angle_deg);
-    return t;
+    set_text(t.reason, "left and right walls are %.1f deg from parallel (max %.1f)",
+             t.left_right_angle_deg, max_pair_angle_deg);
+    return;
   }
   if (t.top_bottom_angle_deg > max_pair_angle_deg) {
     t.status = "no_parallel_pair";
-    t.reason = fmt("top and bottom walls are %.1f deg from parallel (max %.1f)",
-                   t.top_bottom_angle_deg, max_pair_angle_deg);
-    return t;
+    set_text(t.reason, "top and bottom walls are %.1f deg from parallel (max %.1f)",
+             t.top_bottom_angle_deg, max_pair_angle_deg);
+    return;
   }
   // One direction per pair; both walls of a pair contribute equally.
   const Eigen::Vector3d a = (n_left - n_right).normalized();
@@ -42,9 +61,9 @@ TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eige
   t.pair_angle_deg = std::abs(angle_deg(a, b) - 90.0);
   if (t.pair_angle_deg > max_pair_angle_deg) {
     t.status = "not_rectangular";
-    t.reason = fmt("wall pairs are %.1f deg from perpendicular (max %.1f)", t.pair_angle_deg,
-                   max_pair_angle_deg);
-    return t;
+    set_text(t.reason, "wall pairs are %.1f deg from perpendicular (max %.1f)", t.pair_angle_deg,
+             max_pair_angle_deg);
+    return;
   }
   // Orthogonalise symmetrically: rotate a and b by half the error each, about their bisector.
   const Eigen::Vector3d s = (a + b).normalized();
@@ -54,7 +73,6 @@ TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eige
   t.axis = t.up.cross(t.right);
   if (t.axis.dot(camera_forward) < 0) t.axis = -t.axis;
   t.ok = true;
-  return t;
 }
 
 }  // namespace tunnelmap

@@ -23,5 +23,11 @@ TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eige
                                        const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
                                        const Eigen::Vector3d& camera_forward,
                                        double max_pair_angle_deg);
+// The same, written into `out`: its status/reason strings keep their buffers, so a caller that
+// reuses `out` allocates nothing per frame in the steady state.
+void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector3d& n_right,
+                              const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
+                              const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
+                              TemplateFrame& out);
 
 }  // namespace tunnelmap

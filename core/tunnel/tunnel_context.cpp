@@ -24,6 +24,10 @@ double median(const std::vector<double>& values) {
 void TunnelContext::accept(const TunnelMap& map) {
   if (!map.detected) return;  // only detected maps define the context
   if (widths_.size() < kWindow) {
+    if (widths_.empty()) {  // the whole window at once: no reallocation while it fills
+      widths_.reserve(kWindow);
+      heights_.reserve(kWindow);
+    }
     widths_.push_back(map.width_m);
     heights_.push_back(map.height_m);
     return;

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/tunnel/normal_outliers.h"
 #include "core/tunnel/template_fit.h"
@@ -22,16 +25,74 @@ namespace {
 constexpr WallClass kWalls[] = {WallClass::Left, WallClass::Right, WallClass::Top,
                                 WallClass::Bottom};
 
-std::string fmt(const char* f, double a = 0, double b = 0, double c = 0, double d = 0) {
+// Strings are written into the map's own (reused) buffers: a std::string returned by value
+// would allocate on every frame once longer than 15 characters.
+[[gnu::format(printf, 2, 3)]] void set_text(std::string& out, const char* f, ...) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, f, a, b, c, d);
-  return buf;
+  va_list args;
+  va_start(args, f);
+  std::vsnprintf(buf, sizeof buf, f, args);
+  va_end(args);
+  out.assign(buf);
 }
 
-void fail(TunnelMap& map, const std::string& status, const std::string& reason) {
+[[gnu::format(printf, 2, 3)]] void append_text(std::string& out, const char* f, ...) {
+  char buf[256];
+  va_list args;
+  va_start(args, f);
+  std::vsnprintf(buf, sizeof buf, f, args);
+  va_end(args);
+  out.append(buf);
+}
+
+// The caller writes map.reason.
+void fail(TunnelMap& map, const char* status) {
   map.detected = false;
   map.status = status;
-  map.reason = reason;
+}
+
+// Per-thread scratch of one detection, reused frame after frame.
+struct DetectorScratch {
+  std::vector<size_t> members;
+  std::vector<WeightedNormal> normals;
+  std::vector<ZonePosition> positions;
+  NormalClassStats stats;
+  TemplateFrame frame;
+};
+
+DetectorScratch& scratch() {
+  thread_local DetectorScratch s;
+  return s;
+}
+
+// Gives `map` the values of a default TunnelMap while keeping its vectors' and strings'
+// buffers (a fresh map would allocate them again). Timings keep the "tunnel" entry, zeroed.
+void reset_keeping_buffers(TunnelMap& map) {
+  TunnelMap fresh;
+  // After the swap `old` holds the default value; copying it back keeps `keep`'s buffer.
+  const auto recycle = [](auto& keep, auto& old) {
+    keep.swap(old);
+    keep = old;
+  };
+  recycle(fresh.status, map.status);
+  recycle(fresh.reason, map.reason);
+  recycle(fresh.plane_classes, map.plane_classes);
+  recycle(fresh.plane_outlier, map.plane_outlier);
+  recycle(fresh.plane_candidate_classes, map.plane_candidate_classes);
+  for (size_t i = 0; i < fresh.walls.size(); ++i) {
+    recycle(fresh.walls[i].clusters, map.walls[i].clusters);
+    recycle(fresh.walls[i].zones, map.walls[i].zones);
+  }
+  fresh.timings_ms.swap(map.timings_ms);
+  for (auto it = fresh.timings_ms.begin(); it != fresh.timings_ms.end();) {
+    if (it->first == "tunnel") {
+      it->second = 0.0;
+      ++it;
+    } else {
+      it = fresh.timings_ms.erase(it);
+    }
+  }
+  map = std::move(fresh);
 }
 
 void check_options(const TunnelOptions& o) {
@@ -46,20 +107,25 @@ bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& ro
                          const TunnelOptions& opt, TunnelMap& map,
                          std::array<Eigen::Vector3d, 4>& means) {
   const size_t n = planes.planes.size();
-  map.plane_candidate_classes = classify_planes(rough, planes, opt.class_angle_deg);
-  map.plane_classes = map.plane_candidate_classes;
+  classify_planes(rough, planes, opt.class_angle_deg, map.plane_candidate_classes);
+  map.plane_classes = map.plane_candidate_classes;  // copy-assignment reuses the buffer
   map.plane_outlier.assign(n, false);
-  std::string missing;
+  DetectorScratch& scr = scratch();
+  std::string& missing = map.reason;  // empty here; only read if a wall is missing
+  missing.clear();
   for (WallClass c : kWalls) {
-    std::vector<size_t> members;
-    std::vector<WeightedNormal> normals;
+    std::vector<size_t>& members = scr.members;
+    std::vector<WeightedNormal>& normals = scr.normals;
+    members.clear();
+    normals.clear();
     for (size_t i = 0; i < n; ++i) {
       if (map.plane_candidate_classes[i] != c) continue;
       members.push_back(i);
       normals.push_back({planes.planes[i].normal.normalized(),
                          static_cast<double>(std::max(1, planes.planes[i].points))});
     }
-    const NormalClassStats st = reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg);
+    NormalClassStats& st = scr.stats;
+    reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg, st);
     Wall& w = map.wall(c);
     w.cls = c;
     for (size_t k = 0; k < members.size(); ++k) {
@@ -75,12 +141,12 @@ bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& ro
     means[static_cast<int>(c)] = st.mean;
     if (!st.valid) {
       if (!missing.empty()) missing += "; ";
-      missing += std::string(wall_class_name(c)) + " wall: " + std::to_string(members.size()) +
-                 " planes" + (members.empty() ? "" : ", all outliers");
+      append_text(missing, "%s wall: %zu planes%s", wall_class_name(c), members.size(),
+                  members.empty() ? "" : ", all outliers");
     }
   }
   if (!missing.empty()) {
-    fail(map, "missing_wall", missing);
+    fail(map, "missing_wall");
     return false;
   }
   return true;
@@ -98,7 +164,8 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   map.axis_dir = rough.forward;
 
   if (n < 4) {
-    fail(map, "too_few_planes", fmt("%.0f planes detected, at least 4 needed", double(n)));
+    fail(map, "too_few_planes");
+    set_text(map.reason, "%.0f planes detected, at least 4 needed", double(n));
     return;
   }
 
@@ -107,18 +174,23 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   if (!classify_and_reject(planes, rough, opt, map, means)) return;
 
   // Step 3: rectangular template.
-  const TemplateFrame tf = fit_rectangular_template(
-      means[int(WallClass::Left)], means[int(WallClass::Right)], means[int(WallClass::Top)],
-      means[int(WallClass::Bottom)], rough.forward, opt.max_pair_angle_deg);
+  TemplateFrame& tf = scratch().frame;
+  fit_rectangular_template(means[int(WallClass::Left)], means[int(WallClass::Right)],
+                           means[int(WallClass::Top)], means[int(WallClass::Bottom)], rough.forward,
+                           opt.max_pair_angle_deg, tf);
   if (!tf.ok) {
-    fail(map, tf.status, tf.reason);
+    map.detected = false;
+    map.status = tf.status;  // copy-assignments reuse the map's buffers
+    map.reason = tf.reason;
     return;
   }
   const Eigen::Vector3d template_normal[4] = {tf.right, -tf.right, -tf.up, tf.up};
 
   // Step 4: zone positions with the common wall normal, clustered; outermost supported zone.
   double offsets[4] = {0, 0, 0, 0};
-  std::string weak;
+  std::string& weak = map.reason;  // empty here; only read if a wall has no supported zone
+  weak.clear();
+  std::vector<ZonePosition>& positions = scratch().positions;
   double axial_min = std::numeric_limits<double>::infinity();
   double axial_max = -axial_min;
   for (WallClass c : kWalls) {
@@ -126,7 +198,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
     Wall& w = map.wall(c);
     w.found = true;
     w.normal = template_normal[ci];
-    std::vector<ZonePosition> positions;
+    positions.clear();
     for (size_t i = 0; i < n; ++i) {
       if (map.plane_classes[i] != c) continue;
       const PlaneSegment& p = planes.planes[i];
@@ -140,20 +212,20 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
         axial_max = std::max(axial_max, tf.axis.dot(q));
       }
     }
-    w.clusters = cluster_zone_positions(std::move(positions), opt.zone_cluster_m);
+    cluster_zone_positions(positions, opt.zone_cluster_m, opt.min_cluster_points, w.clusters);
     const int best = outermost_supported_cluster(w.clusters, opt.min_cluster_points);
     if (best < 0) {
       w.found = false;
       if (!weak.empty()) weak += "; ";
-      weak += std::string(wall_class_name(c)) + " wall: no zone cluster with >= " +
-              std::to_string(opt.min_cluster_points) + " points";
+      append_text(weak, "%s wall: no zone cluster with >= %d points", wall_class_name(c),
+                  opt.min_cluster_points);
       continue;
     }
     offsets[ci] = w.clusters[best].offset_m;
     w.offset_m = offsets[ci];
   }
   if (!weak.empty()) {
-    fail(map, "missing_wall", weak);
+    fail(map, "missing_wall");
     return;
   }
   if (opt.max_symmetric_step_m > 0) {  // symmetric zone prior, steps first, then applied
@@ -192,18 +264,20 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
 
   // Step 5: template prior and context of earlier scans.
   if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m) {
-    fail(map, "out_of_template", fmt("width %.3f m outside [%.2f, %.2f]", map.width_m,
-                                     opt.width_min_m, opt.width_max_m));
+    fail(map, "out_of_template");
+    set_text(map.reason, "width %.3f m outside [%.2f, %.2f]", map.width_m, opt.width_min_m,
+             opt.width_max_m);
     return;
   }
   if (map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
-    fail(map, "out_of_template", fmt("height %.3f m outside [%.2f, %.2f]", map.height_m,
-                                     opt.height_min_m, opt.height_max_m));
+    fail(map, "out_of_template");
+    set_text(map.reason, "height %.3f m outside [%.2f, %.2f]", map.height_m, opt.height_min_m,
+             opt.height_max_m);
     return;
   }
   map.detected = true;
   map.status = "ok";
-  map.reason = fmt("width %.3f m, height %.3f m", map.width_m, map.height_m);
+  set_text(map.reason, "width %.3f m, height %.3f m", map.width_m, map.height_m);
   if (context) apply_tunnel_context(map, opt, *context);
 }
 
@@ -211,16 +285,20 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
 
 TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                         const TunnelOptions& options, const TunnelContext* context) {
+  TunnelMap map;
+  detect_tunnel(planes, up_camera, options, context, map);
+  return map;
+}
+
+void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                   const TunnelOptions& options, const TunnelContext* context, TunnelMap& map) {
   const double up_norm = up_camera.norm();
   if (!std::isfinite(up_norm) || up_norm < 1e-9)
     throw ParameterError("tunnel detection: the up vector must be finite and non-zero");
   check_options(options);
-  TunnelMap map;
-  {
-    StageTimer timer(map.timings_ms, "tunnel");
-    run(planes, up_camera, options, context, map);
-  }
-  return map;
+  reset_keeping_buffers(map);
+  StageTimer timer(map.timings_ms, "tunnel");
+  run(planes, up_camera, options, context, map);
 }
 
 void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const TunnelContext& context) {
@@ -228,13 +306,13 @@ void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const Tunnel
   const double dw = map.width_m - context.width_m();
   const double dh = map.height_m - context.height_m();
   if (std::abs(dw) > opt.context_tolerance_m) {
-    fail(map, "inconsistent_with_context",
-         fmt("width %.3f m differs from the context's %.3f m by more than %.0f mm", map.width_m,
-             context.width_m(), opt.context_tolerance_m * 1000.0));
+    fail(map, "inconsistent_with_context");
+    set_text(map.reason, "width %.3f m differs from the context's %.3f m by more than %.0f mm",
+             map.width_m, context.width_m(), opt.context_tolerance_m * 1000.0);
   } else if (std::abs(dh) > opt.context_tolerance_m) {
-    fail(map, "inconsistent_with_context",
-         fmt("height %.3f m differs from the context's %.3f m by more than %.0f mm", map.height_m,
-             context.height_m(), opt.context_tolerance_m * 1000.0));
+    fail(map, "inconsistent_with_context");
+    set_text(map.reason, "height %.3f m differs from the context's %.3f m by more than %.0f mm",
+             map.height_m, context.height_m(), opt.context_tolerance_m * 1000.0);
   }
 }
 

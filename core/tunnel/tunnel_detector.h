@@ -48,6 +48,11 @@ class TunnelContext {
 // is in the camera frame. `context` may be null (single frame).
 TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                         const TunnelOptions& options, const TunnelContext* context);
+// The same, written into `map`: every field is reset to what the returned map would hold, but
+// the vectors and strings keep their buffers, so detecting frame after frame into one map
+// allocates nothing in the steady state (issue 7).
+void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                   const TunnelOptions& options, const TunnelContext* context, TunnelMap& map);
 
 // The context check of step 5 alone, for a map detected without a context: a detected map whose
 // width or height differs from the context's by more than context_tolerance_m becomes

@@ -55,9 +55,15 @@ WallClass classify_normal(const RoughTunnelFrame& frame, const Eigen::Vector3d& 
 std::vector<WallClass> classify_planes(const RoughTunnelFrame& frame, const PlaneSegments& planes,
                                        double class_angle_deg) {
   std::vector<WallClass> out;
+  classify_planes(frame, planes, class_angle_deg, out);
+  return out;
+}
+
+void classify_planes(const RoughTunnelFrame& frame, const PlaneSegments& planes,
+                     double class_angle_deg, std::vector<WallClass>& out) {
+  out.clear();
   out.reserve(planes.planes.size());
   for (const auto& p : planes.planes) out.push_back(classify_normal(frame, p.normal, class_angle_deg));
-  return out;
 }
 
 }  // namespace tunnelmap

@@ -25,5 +25,8 @@ WallClass classify_normal(const RoughTunnelFrame& frame, const Eigen::Vector3d& 
 
 std::vector<WallClass> classify_planes(const RoughTunnelFrame& frame, const PlaneSegments& planes,
                                        double class_angle_deg);
+// The same, written into `out` (its buffer reused: no allocation per frame in the steady state).
+void classify_planes(const RoughTunnelFrame& frame, const PlaneSegments& planes,
+                     double class_angle_deg, std::vector<WallClass>& out);
 
 }  // namespace tunnelmap

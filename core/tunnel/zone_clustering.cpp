@@ -4,29 +4,68 @@
 
 namespace tunnelmap {
 
-std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m) {
+std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m,
+                                               int anchor_points) {
+  std::vector<ZoneCluster> out;
+  cluster_zone_positions(positions, gap_m, anchor_points, out);
+  return out;
+}
+
+void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, int anchor_points,
+                            std::vector<ZoneCluster>& out) {
   std::sort(positions.begin(), positions.end(),
             [](const ZonePosition& a, const ZonePosition& b) { return a.offset_m > b.offset_m; });
-  std::vector<ZoneCluster> out;
-  double weighted_sum = 0.0, weight = 0.0;
-  auto close_cluster = [&]() {
-    if (out.empty() || weight <= 0.0) return;
-    out.back().offset_m = weighted_sum / weight;
-    weighted_sum = weight = 0.0;
-  };
-  for (size_t i = 0; i < positions.size(); ++i) {
-    if (i == 0 || positions[i - 1].offset_m - positions[i].offset_m > gap_m) {
-      close_cluster();
-      out.emplace_back();
+  const size_t n = positions.size();
+  // Per-thread scratch reused frame after frame (issue 7: no allocation per frame).
+  thread_local std::vector<int> cluster_of;
+  thread_local std::vector<double> lo, hi;  // offset range of each cluster's linking planes
+  thread_local std::vector<double> weighted_sum, weight;
+  cluster_of.assign(n, -1);
+  lo.clear();
+  hi.clear();
+  // Single linkage over the planes with index list `which` (sorted, outermost first).
+  auto link = [&](auto&& is_member) {
+    int last = -1;
+    for (size_t i = 0; i < n; ++i) {
+      if (!is_member(i)) continue;
+      if (last < 0 || positions[last].offset_m - positions[i].offset_m > gap_m) {
+        lo.push_back(positions[i].offset_m);
+        hi.push_back(positions[i].offset_m);
+      }
+      cluster_of[i] = static_cast<int>(lo.size()) - 1;
+      lo.back() = positions[i].offset_m;
+      last = static_cast<int>(i);
     }
-    const double w = std::max(1, positions[i].points);
-    weighted_sum += w * positions[i].offset_m;
-    weight += w;
-    out.back().planes += 1;
-    out.back().points += positions[i].points;
+  };
+  // 1. Anchors link zones; 2. small planes join the nearest anchor cluster within the gap
+  // (they cannot bridge two zones); 3. small planes left over link among themselves.
+  link([&](size_t i) { return positions[i].points >= anchor_points; });
+  const size_t anchored = lo.size();
+  for (size_t i = 0; i < n; ++i) {
+    if (cluster_of[i] >= 0) continue;
+    const double x = positions[i].offset_m;
+    double best = gap_m;
+    for (size_t c = 0; c < anchored; ++c) {
+      const double d = x > hi[c] ? x - hi[c] : (x < lo[c] ? lo[c] - x : 0.0);
+      if (d <= best) best = d, cluster_of[i] = static_cast<int>(c);
+    }
   }
-  close_cluster();
-  return out;
+  link([&](size_t i) { return cluster_of[i] < 0; });
+
+  out.assign(lo.size(), ZoneCluster());
+  weighted_sum.assign(lo.size(), 0.0);
+  weight.assign(lo.size(), 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const int c = cluster_of[i];
+    const double w = std::max(1, positions[i].points);  // the point-weighted mean
+    weighted_sum[c] += w * positions[i].offset_m;
+    weight[c] += w;
+    out[c].planes += 1;
+    out[c].points += positions[i].points;
+  }
+  for (size_t c = 0; c < out.size(); ++c) out[c].offset_m = weighted_sum[c] / weight[c];
+  std::sort(out.begin(), out.end(),
+            [](const ZoneCluster& a, const ZoneCluster& b) { return a.offset_m > b.offset_m; });
 }
 
 int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int min_points) {

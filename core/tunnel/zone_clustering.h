@@ -12,9 +12,17 @@ struct ZonePosition {
 };
 
 // Single-linkage clustering of the offsets: sorted, a gap larger than `gap_m` starts a new
-// cluster. Each cluster's offset is the point-weighted mean (planes with 0 points weigh 1).
+// cluster. Only planes with >= `anchor_points` points link clusters: a smaller plane joins the
+// nearest cluster within `gap_m`, so a chain of small noisy far planes cannot merge two zones
+// (a 6 mm plate step with 4 mm gaps); small planes near no anchor cluster among themselves.
+// Each cluster's offset is the point-weighted mean (planes with 0 points weigh 1).
 // Returned outermost first (largest offset = furthest from the tunnel inside).
-std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m);
+std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m,
+                                               int anchor_points = 0);
+// The same, written into `out` (buffers reused: no allocation per frame in the steady state).
+// Sorts `positions` in place (outermost first).
+void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, int anchor_points,
+                            std::vector<ZoneCluster>& out);
 
 // Index into `clusters` of the outermost cluster with at least `min_points` points, or -1.
 int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int min_points);

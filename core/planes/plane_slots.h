@@ -1,0 +1,39 @@
+#pragma once
+// Reusing PlaneSegments::planes from frame to frame without heap allocations: the vector's own
+// capacity persists, but a slot destroyed by shrinking takes its contour buffer with it. These
+// park such buffers in a per-thread pool and hand them to the next new slot.
+#include <utility>
+#include <vector>
+
+#include "core/planes/plane_segment.h"
+
+namespace tunnelmap {
+
+inline std::vector<std::vector<Eigen::Vector3d>>& spare_contour_buffers() {
+  thread_local std::vector<std::vector<Eigen::Vector3d>> pool;
+  return pool;
+}
+
+// Appends a slot, with a recycled contour buffer when one is parked.
+inline PlaneSegment& add_plane_slot(std::vector<PlaneSegment>& planes) {
+  planes.emplace_back();
+  auto& pool = spare_contour_buffers();
+  if (!pool.empty()) {
+    planes.back().contour = std::move(pool.back());
+    planes.back().contour.clear();
+    pool.pop_back();
+  }
+  // Room for a typical simplified outline, so that slots trading planes rarely need to grow.
+  if (planes.back().contour.capacity() < 64) planes.back().contour.reserve(64);
+  return planes.back();
+}
+
+// Shrinks to `n` slots, parking the contour buffers of the removed ones.
+inline void shrink_plane_slots(std::vector<PlaneSegment>& planes, std::size_t n) {
+  auto& pool = spare_contour_buffers();
+  for (std::size_t i = n; i < planes.size(); ++i)
+    if (planes[i].contour.capacity() > 0) pool.push_back(std::move(planes[i].contour));
+  if (n < planes.size()) planes.resize(n);
+}
+
+}  // namespace tunnelmap
