@@ -151,10 +151,10 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     planes.planes[kept++].id = id;
   }
   shrink_plane_slots(planes.planes, kept);
-  for (std::int32_t& l : planes.labels)
-    if (l > 0) l = new_id[l];
-  for (std::int32_t& l : coarse)
-    if (l > 0) l = new_id[l];
+  // Branch-free: new_id[0] = 0 keeps unlabelled pixels unlabelled.
+  const std::int32_t* map = new_id.data();
+  for (std::int32_t& l : planes.labels) l = map[l];
+  for (std::int32_t& l : coarse) l = map[l];
 }
 
 }  // namespace tunnelmap
