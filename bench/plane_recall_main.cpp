@@ -35,7 +35,9 @@ const char* const kUsage =
     "  --set KEY=VALUE   parameter on top of each preset (repeatable)\n"
     "  --presets-dir DIR preset JSON files (default: the source tree's resources/presets)\n"
     "  --csv FILE        one row per true surface and frame\n"
-    "  --markdown FILE   the report (also printed on stdout)\n";
+    "  --markdown FILE   the report (also printed on stdout)\n"
+    "  --min-recall R    exit 1 when any preset x grid step has recall below R (0..1)\n"
+    "  --min-precision P exit 1 when any preset x grid step has precision below P (0..1)\n";
 
 const std::string kDefaultPresetsDir = TUNNELMAP_SOURCE_DIR "/resources/presets";
 
@@ -51,7 +53,21 @@ struct Options {
   std::vector<std::string> sets;
   std::string presets_dir = kDefaultPresetsDir;
   std::string csv, markdown;
+  double min_recall = 0.0, min_precision = 0.0;  // regression limits (0 = none)
 };
+
+double parse_fraction(const std::string& option, const std::string& text) {
+  std::size_t used = 0;
+  double v = -1;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(v >= 0.0 && v <= 1.0))
+    throw UsageError(option + ": '" + text + "' is not a fraction between 0 and 1");
+  return v;
+}
 
 int parse_int(const std::string& option, const std::string& text, int lo, int hi) {
   std::size_t used = 0;
@@ -90,7 +106,8 @@ Options parse_options(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const kValued[] = {"--seeds", "--stride", "--presets", "--grid-steps",
-                                          "--set", "--presets-dir", "--csv", "--markdown"};
+                                          "--set", "--presets-dir", "--csv", "--markdown",
+                                          "--min-recall", "--min-precision"};
     if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
       throw UsageError(arg.rfind("-", 0) == 0 ? "unknown option '" + arg + "' (see --help)"
                                               : "unexpected argument '" + arg + "'");
@@ -118,6 +135,10 @@ Options parse_options(int argc, char** argv) {
       o.presets_dir = value;
     } else if (arg == "--csv") {
       o.csv = value;
+    } else if (arg == "--min-recall") {
+      o.min_recall = parse_fraction(arg, value);
+    } else if (arg == "--min-precision") {
+      o.min_precision = parse_fraction(arg, value);
     } else {  // --markdown
       o.markdown = value;
     }
@@ -230,7 +251,20 @@ int main(int argc, char** argv) {
     std::cout << report;
     if (!o.markdown.empty()) write_file_atomically(o.markdown, [&](std::ostream& out) { out << report; });
     if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { out << csv; });
-    return 0;
+    int status = 0;
+    for (const recall::RunTally& t : runs) {
+      if (t.score.recall() < o.min_recall) {
+        std::fprintf(stderr, "FAIL: %s grid step %d recall %.4f < %.4f\n", t.preset.c_str(), t.grid_step,
+                     t.score.recall(), o.min_recall);
+        status = 1;
+      }
+      if (t.score.precision() < o.min_precision) {
+        std::fprintf(stderr, "FAIL: %s grid step %d precision %.4f < %.4f\n", t.preset.c_str(), t.grid_step,
+                     t.score.precision(), o.min_precision);
+        status = 1;
+      }
+    }
+    return status;
   } catch (const UsageError& e) {
     std::fprintf(stderr, "tunnelmap_plane_recall: %s\n", e.what());
     return 2;

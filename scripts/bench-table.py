@@ -118,7 +118,7 @@ def main():
           f"{', '.join(f'{x:.2f}' for x in ctx.get('load_avg', []))}; median {kind} ms per VGA "
           f"frame over the repetitions, one thread (OpenCV threads "
           f"{ctx.get('opencv_threads', '?')}, OMP_NUM_THREADS=1).\n")
-    print("**TunnelMap vs PCL vs OpenCV.** (N×) = ms / TunnelMap's (every-pixel) plane-extraction ms; "
+    print("**TunnelMap vs PCL vs OpenCV.** (N×) = ms / TunnelMap's default plane-extraction ms; "
           "R / P = plane recall / precision against the simulator's true surfaces "
           "(simulated frames only).\n")
     peer_table(rows, frames)
