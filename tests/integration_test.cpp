@@ -66,8 +66,8 @@ void expect_core_bounds(const SequenceScore& s) {
 
 }  // namespace
 
-// What both growing paths measured when this was written (lab 0.6 / 0.5 mm, σ <= 0.4 mm; field
-// <= 1.0 / 0.7 mm, σ <= 1.3 mm): a regression guard well inside the core bounds.
+// What both growing paths measured when this was written (lab 0.6-0.7 / 0.5 mm, σ <= 0.4 mm;
+// field 0.7-1.0 / 0.6-0.7 mm, σ <= 1.3 mm): a regression guard well inside the core bounds.
 void expect_measured_level(const SequenceScore& s) {
   EXPECT_LE(s.width_err_mm, 2.0);
   EXPECT_LE(s.height_err_mm, 2.0);

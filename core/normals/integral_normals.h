@@ -8,7 +8,7 @@ namespace tunnelmap {
 
 struct NormalOptions {
   int smoothing_px = 10;           // normals.smoothing_px: side of the box window
-  double max_depth_change = 0.08;  // normals.max_depth_change: relative 2nd difference of inverse depth = edge
+  double max_depth_change = 0.15;  // normals.max_depth_change: relative 2nd difference of inverse depth = edge
 };
 
 // Fills cloud.normals (unit, facing the camera; NaN at edges/invalid pixels).

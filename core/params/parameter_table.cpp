@@ -23,7 +23,7 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Pixels nearer than this are ignored (below the sensor's working range)"},
     {"normals.smoothing_px", "px", 10, 3, 41, 1, true, Stage::Normals, "Normal window",
      "Side of the integral-image smoothing window used for per-pixel normals (Holzer et al.)"},
-    {"normals.max_depth_change", "", 0.08, 0.005, 1.0, 0.005, false, Stage::Normals,
+    {"normals.max_depth_change", "", 0.15, 0.005, 1.0, 0.005, false, Stage::Normals,
      "Discontinuity limit",
      "Relative second difference of inverse depth that marks a depth edge (no normal near it); planes give 0"},
     {"grow.angle_deg", "deg", 4.0, 0.5, 30.0, 0.1, false, Stage::Planes, "Normal angle (lambda)",

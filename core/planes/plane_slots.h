@@ -23,8 +23,9 @@ inline PlaneSegment& add_plane_slot(std::vector<PlaneSegment>& planes) {
     planes.back().contour.clear();
     pool.pop_back();
   }
-  // Room for a typical simplified outline, so that slots trading planes rarely need to grow.
-  if (planes.back().contour.capacity() < 64) planes.back().contour.reserve(64);
+  // Room for a long simplified outline (VGA frames: up to ~100 vertices), so that slots trading
+  // planes from frame to frame rarely need to grow; 3 kB per slot.
+  if (planes.back().contour.capacity() < 128) planes.back().contour.reserve(128);
   return planes.back();
 }
 
