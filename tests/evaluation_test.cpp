@@ -326,7 +326,8 @@ TEST(Table1Protocol, ReducedProtocolMeetsTheBounds) {
     if (r.method == Method::Pgc) {
       ASSERT_TRUE(r.has_segmentation);
       // Lowest cell: 5 m to the plate, where far planes of < 100 px straddle plates 6-12 mm
-      // apart (coarse-to-fine default 0.57, every-pixel growing 0.66).
+      // apart (measured: 0.51 with the defaults of session 3; session 2's every-pixel growing
+      // 0.66). By issue 7's majority rule precision is >= 99 % (docs/recall.md).
       EXPECT_GT(r.segmentation.precision(), 0.5) << r.cell;
     }
   }
