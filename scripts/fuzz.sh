@@ -10,6 +10,9 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 build=$(realpath -m "${1:-$root/build-fuzz}")
 seconds=${FUZZ_SECONDS:-60}
+# A fixed FUZZ_SEED makes a run repeatable (CI sets one); unset, libFuzzer picks a new seed.
+seed_flag=()
+[ -n "${FUZZ_SEED:-}" ] && seed_flag=("-seed=$FUZZ_SEED")
 parallel=${FUZZ_PARALLEL:-2}
 start=$(date +%s)
 
@@ -33,11 +36,14 @@ run_one() {
   rm -rf "$work" "$findings" "$scratch"
   mkdir -p "$work" "$findings" "$scratch"
   local rc=0
+  # A keyword dictionary where there is one (tests/fuzz/<target>.dict) reaches header paths sooner.
+  local dict=()
+  [ -f "$root/tests/fuzz/$1.dict" ] && dict=("-dict=$root/tests/fuzz/$1.dict")
   # New inputs go to the work dir (first corpus dir); the committed seeds stay untouched.
   TUNNELMAP_FUZZ_SCRATCH="$scratch" ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     "$build/tests/fuzz/fuzz_$t" "$work" "$root/tests/fuzz/corpus/$t" \
     -max_total_time="$seconds" -max_len="${max_len[$t]}" -timeout=10 -rss_limit_mb=2048 \
-    -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1 || rc=$?
+    -artifact_prefix="$findings/" -print_final_stats=1 "${seed_flag[@]}" "${dict[@]}" >"$log" 2>&1 || rc=$?
   echo "$rc" >"$log.rc"
   rm -rf "$scratch"
 }
@@ -58,6 +64,9 @@ for t in "${targets[@]}"; do
     status=1
     echo "fuzz $t: FINDING (exit $rc) after ${execs:-?} executions: ${finding:-see $log}"
     grep -a -m1 -E 'ERROR: |runtime error|deadly signal|out-of-memory|timeout' "$log" || true
+    # The findings folder does not outlive a CI machine: print the input so it can be rebuilt
+    # with  base64 -d > crash  and replayed.
+    [ -n "$finding" ] && echo "fuzz $t: input (base64): $(head -c 8192 "$finding" | base64 -w0)"
   else
     echo "fuzz $t: ok, ${execs:-?} executions in ${seconds} s, exit 0"
   fi

@@ -638,6 +638,19 @@ TEST(OrganizedPcd, RejectsInconsistentFieldDescriptions) {
          {"blank, indented or binary line"});
   expect("keyword_after_data.pcd", pcd_text(xyz, "ascii", "\n# c\nWIDTH 400\n" + ascii_body),
          {"data after DATA starts with a header line ('WIDTH')"});
+  // PCL acts on each header line in order (every POINTS line allocates): found by fuzzing, a
+  // first "POINTS 1500000000000008" made PCL request 18 PB before the second POINTS line.
+  expect("points_twice.pcd",
+         "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 4\nHEIGHT 3\nPOINTS 1500000000000008\nPOINTS 12\nDATA ascii\n" +
+             ascii_body,
+         {"POINTS appears more than once"});
+  expect("fields_twice.pcd", pcd_text("FIELDS x y z\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\n", "ascii", ascii_body),
+         {"FIELDS appears more than once"});
+  expect("count_first.pcd", pcd_text("FIELDS x y z\nCOUNT 1 1 1\nSIZE 4 4 4\nTYPE F F F\n", "ascii", ascii_body),
+         {"COUNT before TYPE"});
+  expect("points_first.pcd",
+         "FIELDS x y z\nWIDTH 4\nHEIGHT 3\nPOINTS 12\nSIZE 4 4 4\nTYPE F F F\nDATA ascii\n" + ascii_body,
+         {"POINTS before TYPE"});
   // A header line longer than 64 KiB (no newline): refused without reading the file whole.
   expect("no_newline.pcd", "VERSION .7\nFIELDS " + std::string(70000, 'x'), {"incomplete header"});
 }

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "core/io/depth_png.h"
@@ -77,6 +78,30 @@ void check_data_start(const std::string& path, const std::string& head, std::siz
     throw InputError(path, "corrupt PCD: no data within the first 64 KiB after DATA");
 }
 
+// PCL applies header lines in file order and acts on each at once: every POINTS line
+// allocates POINTS x (the point size known so far), and SIZE / TYPE / COUNT build on the lines
+// before them. A repeated keyword, or the field description after POINTS, would make PCL read
+// (and allocate for) a header other than the one we checked: found by fuzzing, a first
+// "POINTS 1500000000000008" made PCL request 18 PB. Such headers are refused.
+void check_keyword_order(const std::string& path, const std::string& key, std::set<std::string>& seen) {
+  if (key == "VERSION" || key == "VIEWPOINT" || key == "WIDTH" || key == "HEIGHT" || key == "POINTS" ||
+      key == "FIELDS" || key == "SIZE" || key == "TYPE" || key == "COUNT") {
+    if (!seen.insert(key).second)
+      throw InputError(path, "corrupt PCD header: " + key + " appears more than once");
+  }
+  // Each of these needs the ones listed before it; POINTS needs the whole field description.
+  const auto require = [&](const char* before) {
+    if (!seen.count(before))
+      throw InputError(path, "corrupt PCD header: " + key + " before " + before + " (PCL reads them in order)");
+  };
+  if (key == "SIZE") require("FIELDS");
+  if (key == "TYPE") require("SIZE");
+  if (key == "COUNT") require("TYPE");
+  if (key == "POINTS") require("TYPE");
+  if ((key == "FIELDS" || key == "SIZE" || key == "TYPE" || key == "COUNT") && seen.count("POINTS"))
+    throw InputError(path, "corrupt PCD header: " + key + " after POINTS (PCL reads them in order)");
+}
+
 std::uint32_t little_u32(const char* p) {
   std::uint32_t v = 0;
   for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(p[i]);
@@ -98,6 +123,7 @@ PcdHeader read_pcd_header(const std::string& path) {
   std::istringstream in(head);
 
   PcdHeader h;
+  std::set<std::string> seen;
   bool have_width = false, have_height = false, have_points = false, have_count = false;
   std::string line;
   for (int n = 0; n < kMaxHeaderLines && std::getline(in, line); ++n) {
@@ -112,6 +138,7 @@ PcdHeader read_pcd_header(const std::string& path) {
     std::istringstream words(line);
     std::string key;
     words >> key;
+    check_keyword_order(path, key, seen);
     if (key == "FIELDS") {
       for (std::string f; words >> f;) h.fields.push_back(f);
       if (h.fields.size() > kMaxFields) throw InputError(path, "corrupt PCD header: too many FIELDS");
