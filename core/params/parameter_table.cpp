@@ -44,6 +44,9 @@ const std::vector<ParameterSpec>& parameter_table() {
      "1: grow over every pixel exactly as the paper; k > 1 (default 2, 2-3x faster, same accuracy): grow "
      "on every k-th pixel and row, then assign each remaining pixel to a neighbouring sample's plane by "
      "the same distance and angle tests"},
+    {"grow.edge_on_pass", "", 1, 0, 1, 1, true, Stage::Planes, "Edge-on pass",
+     "With grid step > 1: 1 grows every pixel from the unlabelled pixels where grid neighbours lie beyond "
+     "the candidate distance (surfaces seen nearly edge-on, e.g. wall edge bands down the tunnel); 0: off"},
     {"tunnel.class_angle_deg", "deg", 35.0, 5.0, 45.0, 1.0, false, Stage::Tunnel, "Class cone",
      "A plane joins a wall class when its normal is within this angle of that class's direction"},
     {"tunnel.outlier_bin_deg", "deg", 1.0, 0.1, 10.0, 0.1, false, Stage::Tunnel, "Histogram bin",

@@ -28,6 +28,7 @@ GrowOptions grow_options(const Parameters& p) {
   o.min_area_m2 = p.get("grow.min_area_m2");
   o.refit_normal = p.get_int("grow.refit_normal") != 0;
   o.grid_step = p.get_int("grow.grid_step");
+  o.edge_on_pass = p.get_int("grow.edge_on_pass") != 0;
   return o;
 }
 

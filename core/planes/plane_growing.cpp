@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/planes/grazing_growth.h"
 #include "core/planes/plane_contour.h"
 #include "core/planes/plane_model.h"
 #include "core/planes/plane_refinement.h"
@@ -72,6 +73,7 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
   }
   thread_local OrganizedCloud coarse;
   thread_local std::vector<std::int32_t> coarse_labels;
+  thread_local std::vector<PlaneModel> models;  // full-resolution sums by plane id
   {
     StageTimer grow_timer(out.timings_ms, "grow");
     subsample_cloud(cloud, step, coarse);
@@ -82,13 +84,23 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
   }
   {
     StageTimer refine_timer(out.timings_ms, "refine");
-    refine_to_full_resolution(cloud, step, options, out, coarse_labels);
+    refine_to_full_resolution(cloud, step, options, out, coarse_labels, models);
+  }
+  const std::size_t grid_planes = out.planes.size();
+  if (options.edge_on_pass) {
+    StageTimer edge_timer(out.timings_ms, "edge_on");
+    grow_edge_on_surfaces(cloud, step, options, out, models);
   }
   if (options.compute_contours) {
     // The outline at the growing grid's resolution (step times fewer pixels to trace); the
     // coarse intrinsics map a sample's pixel to the same ray as its full-resolution pixel.
     StageTimer contour_timer(out.timings_ms, "contours");
-    for (PlaneSegment& plane : out.planes) {
+    for (std::size_t i = 0; i < out.planes.size(); ++i) {
+      PlaneSegment& plane = out.planes[i];
+      if (i >= grid_planes) {  // found by the edge-on pass: it has no grid samples
+        compute_contour(out.labels, cloud.width, cloud.intrinsics, plane);
+        continue;
+      }
       // Trace with the bounding box in grid coordinates, then restore the full-resolution box.
       const int u0 = plane.bbox_u0, v0 = plane.bbox_v0, u1 = plane.bbox_u1, v1 = plane.bbox_v1;
       plane.bbox_u0 = u0 / step, plane.bbox_v0 = v0 / step;

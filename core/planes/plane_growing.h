@@ -14,6 +14,7 @@ struct GrowOptions {
   double min_area_m2 = 0.004;
   bool refit_normal = true;             // report the least-squares normal of the grown points
   int grid_step = 2;                    // grow on every k-th pixel, then assign the rest (1 = every pixel, the paper)
+  bool edge_on_pass = true;             // grid step > 1: every-pixel growing where the grid cannot connect
   bool compute_contours = true;
 };
 

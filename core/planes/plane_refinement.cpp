@@ -42,14 +42,14 @@ struct PlaneTest {
 }  // namespace
 
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
-                               PlaneSegments& planes, std::vector<std::int32_t>& coarse) {
+                               PlaneSegments& planes, std::vector<std::int32_t>& coarse,
+                               std::vector<PlaneModel>& models) {
   const int w = full.width, h = full.height;
   const int cw = planes.width, ch = planes.height;
   const float eps = static_cast<float>(options.distance_m);
   const float cos_angle = static_cast<float>(std::cos(options.angle_deg * M_PI / 180.0));
 
   thread_local std::vector<PlaneTest> tests;
-  thread_local std::vector<PlaneModel> models;  // the full-resolution members' eq. 4 sums
   thread_local std::vector<int> u0, v0, u1, v1, col0, col1;
   const std::size_t k = planes.planes.size() + 1;  // indexed by plane id (1-based)
   tests.assign(k, PlaneTest{});
@@ -142,6 +142,10 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     renumber |= new_id[p.id] != p.id;
   }
   if (!renumber && static_cast<std::size_t>(next - 1) == planes.planes.size()) return;
+  // The models follow their planes' new ids (ids only decrease, so in place, in order).
+  for (std::size_t old_id = 1; old_id < k; ++old_id)
+    if (new_id[old_id]) models[new_id[old_id]] = models[old_id];
+  models.resize(static_cast<std::size_t>(next));
   // Compact in place, moving kept planes forward (their slots' contour storage travels along).
   std::size_t kept = 0;
   for (std::size_t i = 0; i < planes.planes.size(); ++i) {

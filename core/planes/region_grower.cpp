@@ -60,7 +60,7 @@ inline std::uint32_t free_mask_3x3(const std::int32_t* c, int pw) {
 
 }  // namespace
 
-void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
+void RegionGrower::configure(const OrganizedCloud& cloud, const GrowOptions& o) {
   cloud_ = &cloud;
   w_ = cloud.width, h_ = cloud.height;
   half_ = std::max(1, o.neighbourhood_n / 2);
@@ -80,6 +80,11 @@ void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
   labels_.assign(padded_size, kNoNormal);
   tried_.assign(padded_size, 0);
   queue_.reserve(static_cast<std::size_t>(w_) * h_);
+}
+
+void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
+  configure(cloud, o);
+  packed_valid_ = true;
   const float* n = cloud.normals.data()->data();
   const float* pt = cloud.points.data()->data();
   packed_.resize(static_cast<std::size_t>(w_) * h_ * 8);
@@ -94,6 +99,24 @@ void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
       row[u] = nr[3 * u] == nr[3 * u] ? kFree : kNoNormal;
       kr[8 * u] = pr[3 * u], kr[8 * u + 1] = pr[3 * u + 1], kr[8 * u + 2] = pr[3 * u + 2], kr[8 * u + 3] = 0;
       kr[8 * u + 4] = nr[3 * u], kr[8 * u + 5] = nr[3 * u + 1], kr[8 * u + 6] = nr[3 * u + 2], kr[8 * u + 7] = 0;
+    }
+  }
+}
+
+void RegionGrower::reset_unlabelled(const OrganizedCloud& cloud, const GrowOptions& o,
+                                    const std::vector<std::int32_t>& labels,
+                                    const std::vector<std::uint8_t>& may_seed) {
+  configure(cloud, o);
+  packed_valid_ = false;
+  const float* n = cloud.normals.data()->data();
+  for (int v = 0; v < h_; ++v) {
+    std::int32_t* row = labels_.data() + padded(0, v);
+    std::uint8_t* tried = tried_.data() + padded(0, v);
+    const std::size_t base = static_cast<std::size_t>(v) * w_;
+    for (int u = 0; u < w_; ++u) {
+      const bool joinable = labels[base + u] == 0 && n[3 * (base + u)] == n[3 * (base + u)];
+      row[u] = joinable ? kFree : kNoNormal;
+      tried[u] = !may_seed[base + u];  // "tried" pixels never seed, but may still join
     }
   }
 }
@@ -123,6 +146,7 @@ void RegionGrower::grow(int u, int v, std::int32_t id, PlaneModel& model) {
       queue_.push_back({static_cast<std::int32_t>(p), u + du, v + dv});
     }
   bbox_u0 = u, bbox_v0 = v, bbox_u1 = u + 1, bbox_v1 = v + 1;
+  if (!packed_valid_) return grow_generic(id, model);
   switch (half_) {
     case 1: grow_window<1>(id, model); break;
     case 2: grow_window<2>(id, model); break;

@@ -27,6 +27,13 @@ class RegionGrower {
   // Prepares the label image for `cloud` (pixels without a normal can never join).
   void reset(const OrganizedCloud& cloud, const GrowOptions& options);
 
+  // For a fine pass after coarse-to-fine growing: only pixels with a normal and label 0 in
+  // `labels` (full resolution) can join a plane, and only those with `may_seed` set can seed.
+  // Growth reads the cloud directly: the pass touches few pixels, and packing the whole frame
+  // would cost more than it saves.
+  void reset_unlabelled(const OrganizedCloud& cloud, const GrowOptions& options,
+                        const std::vector<std::int32_t>& labels, const std::vector<std::uint8_t>& may_seed);
+
   // Tries to seed at (u, v): a 2x2 block of free, never-tried pixels whose normals agree within
   // lambda and whose points lie within epsilon of the plane through their mean (the paper's
   // "three or four adjacent points"). On success `model` holds the block.
@@ -54,12 +61,14 @@ class RegionGrower {
   std::size_t padded(int u, int v) const {
     return static_cast<std::size_t>(v + pad_) * pw_ + static_cast<std::size_t>(u + pad_);
   }
+  void configure(const OrganizedCloud& cloud, const GrowOptions& options);
   template <int H>
   void grow_window(std::int32_t id, PlaneModel& model);
   void grow_generic(std::int32_t id, PlaneModel& model);
 
   const OrganizedCloud* cloud_ = nullptr;
   int w_ = 0, h_ = 0, pad_ = 0, pw_ = 0, half_ = 2;
+  bool packed_valid_ = false;  // false after reset_unlabelled: grow_generic reads the cloud
   float cos_angle_ = 0, eps_ = 0, cand2_ = 0;
   std::vector<std::int32_t> labels_;  // padded
   std::vector<std::uint8_t> tried_;   // padded
