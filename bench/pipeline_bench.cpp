@@ -45,17 +45,19 @@ void BM_Grow(benchmark::State& state) {
 }
 
 // Default parameters with PG&C grown on every `grid_step`-th pixel (1 = the paper's growing;
-// 0 = the table's default, the coarse-to-fine grid step 2).
-Parameters params_with_grid_step(int grid_step) {
+// 0 = the table's default, the coarse-to-fine grid step 2); edge_on_pass 0 or 1 overrides
+// grow.edge_on_pass, -1 keeps the default (on).
+Parameters params_with_grid_step(int grid_step, int edge_on_pass = -1) {
   Parameters p;
   if (grid_step > 0) p.set("grow.grid_step", grid_step);
+  if (edge_on_pass >= 0) p.set("grow.edge_on_pass", edge_on_pass);
   return p;
 }
 
 // The paper's "plane extraction": cloud + normals + PG&C + areas + contours.
-void plane_extraction(benchmark::State& state, int grid_step) {
+void plane_extraction(benchmark::State& state, int grid_step, int edge_on_pass = -1) {
   const DepthFrame& f = bench_frames()[state.range(0)].frame;
-  const Parameters p = params_with_grid_step(grid_step);
+  const Parameters p = params_with_grid_step(grid_step, edge_on_pass);
   const CloudOptions co = cloud_options(p);
   const NormalOptions no = normal_options(p);
   const GrowOptions go = grow_options(p);
@@ -71,6 +73,8 @@ void plane_extraction(benchmark::State& state, int grid_step) {
 }
 // The default: issue 7's coarse-to-fine path (grow on every other pixel, assign the rest by eq. 2).
 void BM_PlaneExtraction(benchmark::State& state) { plane_extraction(state, 0); }
+// The default without its edge-on pass (what it costs, and what it finds: docs/recall.md).
+void BM_PlaneExtractionNoEdgeOnPass(benchmark::State& state) { plane_extraction(state, 0, 0); }
 // The paper's growing over every pixel (grow.grid_step = 1).
 void BM_PlaneExtractionEveryPixel(benchmark::State& state) { plane_extraction(state, 1); }
 
@@ -92,6 +96,7 @@ BENCHMARK(BM_Cloud)->Apply(per_frame);
 BENCHMARK(BM_Normals)->Apply(per_frame);
 BENCHMARK(BM_Grow)->Apply(per_frame);
 BENCHMARK(BM_PlaneExtraction)->Apply(per_frame);
+BENCHMARK(BM_PlaneExtractionNoEdgeOnPass)->Apply(per_frame);
 BENCHMARK(BM_PlaneExtractionEveryPixel)->Apply(per_frame);
 BENCHMARK(BM_Detection)->Apply(per_frame);
 BENCHMARK(BM_DetectionEveryPixel)->Apply(per_frame);

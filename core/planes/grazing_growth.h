@@ -29,7 +29,7 @@ inline bool grid_cannot_connect(const Eigen::Vector3f& p, const Eigen::Vector3f&
 // holds full-resolution labels and statistics and `models` their eq. 3-4 sums by id (after
 // refine_to_full_resolution). A grown region that touches a plane and passes the eq. 2 tests
 // as a whole against it (its mean normal within lambda of the plane's, its mean point within
-// epsilon of the plane) is the same surface, cut off from its grid samples: it joins that
+// epsilon / 2 of the plane) is the same surface, cut off from its grid samples: it joins that
 // plane, whatever its size. Any other region of at least the minimum size becomes a new plane
 // with the next id. Statistics, bounding boxes, labels and models are kept up to date;
 // contours are left to the caller. Returns the number of planes added.

@@ -115,7 +115,9 @@ void RegionGrower::reset_unlabelled(const OrganizedCloud& cloud, const GrowOptio
     const std::size_t base = static_cast<std::size_t>(v) * w_;
     for (int u = 0; u < w_; ++u) {
       const bool joinable = labels[base + u] == 0 && n[3 * (base + u)] == n[3 * (base + u)];
-      row[u] = joinable ? kFree : kNoNormal;
+      // A plane's pixel keeps its id as -(id + 1) (< kNoNormal): never free, but adjacent_planes
+      // can name it.
+      row[u] = joinable ? kFree : labels[base + u] > 0 ? -labels[base + u] - 1 : kNoNormal;
       tried[u] = !may_seed[base + u];  // "tried" pixels never seed, but may still join
     }
   }
@@ -146,21 +148,31 @@ void RegionGrower::grow(int u, int v, std::int32_t id, PlaneModel& model) {
       queue_.push_back({static_cast<std::int32_t>(p), u + du, v + dv});
     }
   bbox_u0 = u, bbox_v0 = v, bbox_u1 = u + 1, bbox_v1 = v + 1;
-  if (!packed_valid_) return grow_generic(id, model);
-  switch (half_) {
-    case 1: grow_window<1>(id, model); break;
-    case 2: grow_window<2>(id, model); break;
-    default: grow_generic(id, model); break;
+  if (packed_valid_) {
+    const float* pk = packed_.data();
+    switch (half_) {
+      case 1: grow_window<1, 8>(id, model, pk, pk + 4); break;
+      case 2: grow_window<2, 8>(id, model, pk, pk + 4); break;
+      default: grow_generic(id, model); break;
+    }
+  } else {  // straight from the cloud's xyz arrays
+    const float* pts = cloud_->points.data()->data();
+    const float* nrm = cloud_->normals.data()->data();
+    switch (half_) {
+      case 1: grow_window<1, 3>(id, model, pts, nrm); break;
+      case 2: grow_window<2, 3>(id, model, pts, nrm); break;
+      default: grow_generic(id, model); break;
+    }
   }
 }
 
 // The hot loop. Visits the window's free pixels in row-major order (the order of the bits),
 // exactly like a plain double loop over the window would.
-template <int H>
-void RegionGrower::grow_window(std::int32_t id, PlaneModel& model) {
+// Points and normals are read `S` floats apart: the packed copy (S = 8) or the cloud (S = 3).
+template <int H, int S>
+void RegionGrower::grow_window(std::int32_t id, PlaneModel& model, const float* pts, const float* nrm) {
   constexpr int side = 2 * H + 1;
   std::int32_t* const labels = labels_.data();
-  const float* const pk = packed_.data();
   const int pw = pw_, w = w_;
   const float eps = eps_, cos_angle = cos_angle_, cand2 = cand2_;
   GrowthModel g;
@@ -171,19 +183,19 @@ void RegionGrower::grow_window(std::int32_t id, PlaneModel& model) {
     const std::int32_t* c = labels + m.padded;
     std::uint32_t mask = H == 2 ? free_mask_5x5(c, pw) : free_mask_3x3(c, pw);
     if (!mask) continue;
-    const float* pi = pk + 8 * (static_cast<std::size_t>(m.v) * w + m.u);
+    const float* pi = pts + S * (static_cast<std::size_t>(m.v) * w + m.u);
     const float pix = pi[0], piy = pi[1], piz = pi[2];
     while (mask) {
       const int bit = __builtin_ctz(mask);
       mask &= mask - 1;
       const int du = bit % side - H, dv = bit / side - H;  // constants folded: side is 3 or 5
       const int qu = m.u + du, qv = m.v + dv;
-      const float* qk = pk + 8 * (static_cast<std::size_t>(qv) * w + qu);
-      const float qx = qk[0], qy = qk[1], qz = qk[2];
+      const std::size_t qi = S * (static_cast<std::size_t>(qv) * w + qu);
+      const float qx = pts[qi], qy = pts[qi + 1], qz = pts[qi + 2];
       const float ex = qx - pix, ey = qy - piy, ez = qz - piz;
       if (ex * ex + ey * ey + ez * ez > cand2) continue;                     // candidate distance
       if (std::abs(g.sx * qx + g.sy * qy + g.sz * qz - g.d0) > g.tol_d) continue;  // eq. 2, distance
-      const float nx = qk[4], ny = qk[5], nz = qk[6];
+      const float nx = nrm[qi], ny = nrm[qi + 1], nz = nrm[qi + 2];
       if (g.sx * nx + g.sy * ny + g.sz * nz < g.tol_n) continue;               // eq. 2, angle
       const std::int32_t qp = m.padded + dv * pw + du;
       labels[qp] = id;
@@ -222,6 +234,23 @@ void RegionGrower::grow_generic(std::int32_t id, PlaneModel& model) {
       bbox_v0 = std::min(bbox_v0, qv), bbox_v1 = std::max(bbox_v1, qv);
     }
   }
+}
+
+int RegionGrower::adjacent_planes(std::int32_t* ids, int max) const {
+  int n = 0;
+  const int steps[4] = {-1, 1, -pw_, pw_};
+  for (const Member& m : queue_)
+    for (int s : steps) {
+      const std::int32_t l = labels_[m.padded + s];
+      if (l >= kNoNormal) continue;  // free, this region, or no normal
+      const std::int32_t id = -l - 1;
+      if (std::find(ids, ids + n, id) == ids + n && n < max) ids[n++] = id;
+    }
+  return n;
+}
+
+void RegionGrower::mark_members(std::int32_t id) {
+  for (const Member& m : queue_) labels_[m.padded] = -id - 1;
 }
 
 void RegionGrower::release() {

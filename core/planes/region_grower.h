@@ -46,6 +46,12 @@ class RegionGrower {
   const std::vector<Member>& members() const { return queue_; }
   int bbox_u0 = 0, bbox_v0 = 0, bbox_u1 = 0, bbox_v1 = 0;
 
+  // After reset_unlabelled: the planes (ids of `labels`, or given to mark_members) whose pixels
+  // are 4-adjacent to the current members; at most `max` of them, in `ids`. Returns the count.
+  int adjacent_planes(std::int32_t* ids, int max) const;
+  // The current members now belong to plane `id` (for adjacent_planes of later regions).
+  void mark_members(std::int32_t id);
+
   // A rejected region's pixels become free again but never seed again.
   void release();
 
@@ -62,13 +68,13 @@ class RegionGrower {
     return static_cast<std::size_t>(v + pad_) * pw_ + static_cast<std::size_t>(u + pad_);
   }
   void configure(const OrganizedCloud& cloud, const GrowOptions& options);
-  template <int H>
-  void grow_window(std::int32_t id, PlaneModel& model);
+  template <int H, int S>
+  void grow_window(std::int32_t id, PlaneModel& model, const float* pts, const float* nrm);
   void grow_generic(std::int32_t id, PlaneModel& model);
 
   const OrganizedCloud* cloud_ = nullptr;
   int w_ = 0, h_ = 0, pad_ = 0, pw_ = 0, half_ = 2;
-  bool packed_valid_ = false;  // false after reset_unlabelled: grow_generic reads the cloud
+  bool packed_valid_ = false;  // false after reset_unlabelled: growth reads the cloud
   float cos_angle_ = 0, eps_ = 0, cand2_ = 0;
   std::vector<std::int32_t> labels_;  // padded
   std::vector<std::uint8_t> tried_;   // padded
