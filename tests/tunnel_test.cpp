@@ -177,6 +177,41 @@ TEST(TunnelDetector, MeasuresWidthAndHeightOfTheOutermostZones) {
   EXPECT_GT((s.R * m.axis_dir).dot(Eigen::Vector3d::UnitZ()), std::cos(0.2 * kDeg));
 }
 
+TEST(TunnelDetector, PlanesSeenEdgeOnMeasureNoZone) {
+  // Two large planes on the left wall between its edge bands and its middle plates (8 mm
+  // proud), as a plane seen nearly edge-on that straddles both plates comes out. Counted as
+  // zones they would chain the two plates into one cluster; marked edge_on (the edge-on pass
+  // of coarse-to-fine growing) they are left out and the zones stay as measured without them.
+  Scene s = SceneBuilder(SceneSpec()).build();
+  const TunnelMap clean = detect(s);
+  ASSERT_TRUE(clean.detected);
+  ASSERT_EQ(clean.wall(WallClass::Left).clusters.size(), 2u);
+  const std::size_t band = [&] {  // a left-wall edge band plane (400 points)
+    for (std::size_t i = 0; i < s.planes.planes.size(); ++i)
+      if (clean.plane_classes[i] == WallClass::Left && s.planes.planes[i].points == 400) return i;
+    return s.planes.planes.size();
+  }();
+  ASSERT_LT(band, s.planes.planes.size());
+  for (double f : {1.0 / 3.0, 2.0 / 3.0}) {
+    PlaneSegment p = s.planes.planes[band];
+    p.id = static_cast<int>(s.planes.planes.size()) + 1;
+    p.centroid += f * 0.008 * p.normal;  // the normal faces into the tunnel, like the plates' step
+    p.offset_m = -p.normal.dot(p.centroid);
+    p.points = 3000;
+    s.planes.planes.push_back(p);
+  }
+  const TunnelMap bridged = detect(s);
+  ASSERT_TRUE(bridged.detected);
+  EXPECT_EQ(bridged.wall(WallClass::Left).clusters.size(), 1u) << "unmarked, they chain the plates";
+  for (std::size_t i = s.planes.planes.size() - 2; i < s.planes.planes.size(); ++i) s.planes.planes[i].edge_on = true;
+  const TunnelMap marked = detect(s);
+  ASSERT_TRUE(marked.detected);
+  EXPECT_EQ(marked.wall(WallClass::Left).clusters.size(), 2u);
+  EXPECT_NEAR(marked.width_m, clean.width_m, 1e-6);  // they still vote in the wall directions
+  EXPECT_NEAR(marked.height_m, clean.height_m, 1e-6);
+  EXPECT_EQ(marked.plane_classes.back(), WallClass::Left) << "still classified (and shown) as the left wall";
+}
+
 TEST(TunnelDetector, FlagsOutliersAndLeavesTheManholeUnassigned) {
   const Scene s = SceneBuilder(SceneSpec()).build();
   const TunnelMap m = detect(s);
@@ -496,7 +531,9 @@ void expect_same_map(const TunnelMap& a, const TunnelMap& b) {
       EXPECT_EQ(wa.zones[k].kind, wb.zones[k].kind);
       EXPECT_EQ(wa.zones[k].corners, wb.zones[k].corners);
     }
-    if (a.detected) EXPECT_EQ(wa.boundary, wb.boundary);  // only set once geometry is built
+    if (a.detected) {
+      EXPECT_EQ(wa.boundary, wb.boundary);  // only set once geometry is built
+    }
   }
 }
 

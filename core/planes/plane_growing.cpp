@@ -73,7 +73,7 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
   }
   thread_local OrganizedCloud coarse;
   thread_local std::vector<std::int32_t> coarse_labels;
-  thread_local std::vector<PlaneModel> models;  // full-resolution sums by plane id
+  thread_local std::vector<std::uint8_t> edge_on_states;
   {
     StageTimer grow_timer(out.timings_ms, "grow");
     subsample_cloud(cloud, step, coarse);
@@ -84,12 +84,13 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
   }
   {
     StageTimer refine_timer(out.timings_ms, "refine");
-    refine_to_full_resolution(cloud, step, options, out, coarse_labels, models);
+    refine_to_full_resolution(cloud, step, options, out, coarse_labels,
+                              options.edge_on_pass ? &edge_on_states : nullptr);
   }
   const std::size_t grid_planes = out.planes.size();
   if (options.edge_on_pass) {
     StageTimer edge_timer(out.timings_ms, "edge_on");
-    grow_edge_on_surfaces(cloud, step, options, out, models);
+    grow_edge_on_surfaces(cloud, options, out, edge_on_states);
   }
   if (options.compute_contours) {
     // The outline at the growing grid's resolution (step times fewer pixels to trace); the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/planes/grazing_growth.h"
 #include "core/planes/plane_growing.h"
 #include "core/planes/plane_model.h"
 #include "core/planes/plane_slots.h"
@@ -43,13 +44,14 @@ struct PlaneTest {
 
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
                                PlaneSegments& planes, std::vector<std::int32_t>& coarse,
-                               std::vector<PlaneModel>& models) {
+                               std::vector<std::uint8_t>* edge_on) {
   const int w = full.width, h = full.height;
   const int cw = planes.width, ch = planes.height;
   const float eps = static_cast<float>(options.distance_m);
   const float cos_angle = static_cast<float>(std::cos(options.angle_deg * M_PI / 180.0));
 
   thread_local std::vector<PlaneTest> tests;
+  thread_local std::vector<PlaneModel> models;  // the full-resolution members' eq. 4 sums
   thread_local std::vector<int> u0, v0, u1, v1, col0, col1;
   const std::size_t k = planes.planes.size() + 1;  // indexed by plane id (1-based)
   tests.assign(k, PlaneTest{});
@@ -72,7 +74,18 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
   for (int u = 0; u < w; ++u) col0[u] = u / step, col1[u] = std::min(cw - 1, (u + step - 1) / step);
   const float* pts = full.points.data()->data();
   const float* nrm = full.normals.data()->data();
+  const float focal = static_cast<float>(0.5 * (full.intrinsics.fx + full.intrinsics.fy));
+  const float cand = static_cast<float>(options.candidate_distance_m);
+  // The edge-on pass's pixel states, classified here while each pixel is in cache.
+  const auto state_of = [&](const float* p, const float* n) -> std::uint8_t {
+    if (n[0] != n[0]) return kEdgeOnTaken;
+    return grid_cannot_connect(Eigen::Vector3f(p[0], p[1], p[2]), Eigen::Vector3f(n[0], n[1], n[2]), step, focal, cand)
+               ? kEdgeOnSeed
+               : kEdgeOnJoinable;
+  };
+  if (edge_on) edge_on->resize(static_cast<std::size_t>(w) * h);
   for (int v = 0; v < h; ++v) {
+    std::uint8_t* state = edge_on ? edge_on->data() + static_cast<std::size_t>(v) * w : nullptr;
     // The grown samples around this row: rows cv0 (at or above) and cv1 (at or below).
     const int cv0 = v / step, cv1 = std::min(ch - 1, (v + step - 1) / step);
     const std::int32_t* r0 = coarse.data() + static_cast<std::size_t>(cv0) * cw;
@@ -95,19 +108,24 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
       // Candidate planes: the four surrounding samples; most pixels see only one plane. Where
       // planes meet (e.g. zone plates a few mm apart) the closest plane that passes wins.
       const std::int32_t c[4] = {r0[cu0], r0[cu1], r1[cu0], r1[cu1]};
-      if ((c[0] | c[1] | c[2] | c[3]) == 0) continue;
       const std::size_t i = static_cast<std::size_t>(v) * w + u;
       const float* p = pts + 3 * i;
       const float* n = nrm + 3 * i;
-      if (n[0] != n[0]) continue;  // no normal: never joins a plane
       std::int32_t label = 0;
-      float best = eps + 1.0f;
-      for (int q = 0; q < 4; ++q) {
-        if (c[q] == 0 || (q > 0 && c[q] == c[q - 1]) || c[q] == label) continue;
-        const float dist = tests[c[q]].distance_if_passes(p, n, eps, cos_angle);
-        if (dist >= 0.0f && dist < best) best = dist, label = c[q];
+      // No normal: never joins a plane.
+      if ((c[0] | c[1] | c[2] | c[3]) != 0 && n[0] == n[0]) {
+        float best = eps + 1.0f;
+        for (int q = 0; q < 4; ++q) {
+          if (c[q] == 0 || (q > 0 && c[q] == c[q - 1]) || c[q] == label) continue;
+          const float dist = tests[c[q]].distance_if_passes(p, n, eps, cos_angle);
+          if (dist >= 0.0f && dist < best) best = dist, label = c[q];
+        }
       }
-      if (!label) continue;
+      if (!label) {
+        if (state) state[u] = state_of(p, n);
+        continue;
+      }
+      if (state) state[u] = kEdgeOnTaken;
       out[u] = label;
       if (label != run_label) {
         flush();
@@ -142,10 +160,6 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     renumber |= new_id[p.id] != p.id;
   }
   if (!renumber && static_cast<std::size_t>(next - 1) == planes.planes.size()) return;
-  // The models follow their planes' new ids (ids only decrease, so in place, in order).
-  for (std::size_t old_id = 1; old_id < k; ++old_id)
-    if (new_id[old_id]) models[new_id[old_id]] = models[old_id];
-  models.resize(static_cast<std::size_t>(next));
   // Compact in place, moving kept planes forward (their slots' contour storage travels along).
   std::size_t kept = 0;
   for (std::size_t i = 0; i < planes.planes.size(); ++i) {
@@ -157,7 +171,15 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
   shrink_plane_slots(planes.planes, kept);
   // Branch-free: new_id[0] = 0 keeps unlabelled pixels unlabelled.
   const std::int32_t* map = new_id.data();
-  for (std::int32_t& l : planes.labels) l = map[l];
+  if (edge_on) {  // the pixels of dropped planes are free again
+    for (std::size_t i = 0; i < planes.labels.size(); ++i) {
+      std::int32_t& l = planes.labels[i];
+      if (l && !map[l]) (*edge_on)[i] = state_of(pts + 3 * i, nrm + 3 * i);
+      l = map[l];
+    }
+  } else {
+    for (std::int32_t& l : planes.labels) l = map[l];
+  }
   for (std::int32_t& l : coarse) l = map[l];
 }
 

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "core/frame/organized_cloud.h"
-#include "core/planes/plane_model.h"
 #include "core/planes/plane_segment.h"
 
 namespace tunnelmap {
@@ -21,10 +20,10 @@ void subsample_cloud(const OrganizedCloud& full, int step, OrganizedCloud& coars
 // its labels are full resolution and every reported quantity (points, area, centroid, normals,
 // offset, RMS, bounding box) is that of the full-resolution members. Planes below the minimum
 // size at full resolution are dropped and the rest renumbered 1..N; `coarse` receives the grid's
-// label image with the same ids (for tracing contours at the grid's resolution), and `models`
-// each plane's full-resolution eq. 3-4 sums, indexed by id (models[0] unused).
+// label image with the same ids (for tracing contours at the grid's resolution). With
+// `edge_on`, every pixel's state for grow_edge_on_surfaces (kEdgeOn*) is classified on the way.
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
                                PlaneSegments& planes, std::vector<std::int32_t>& coarse,
-                               std::vector<PlaneModel>& models);
+                               std::vector<std::uint8_t>* edge_on = nullptr);
 
 }  // namespace tunnelmap

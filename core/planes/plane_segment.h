@@ -19,6 +19,7 @@ struct PlaneSegment {
   double rms_m = 0.0;            // RMS point-to-plane distance
   std::vector<Eigen::Vector3d> contour;  // outer boundary polygon on the plane (camera frame)
   int bbox_u0 = 0, bbox_v0 = 0, bbox_u1 = 0, bbox_v1 = 0;  // inclusive pixel bounding box
+  bool edge_on = false;  // found by the edge-on pass of coarse-to-fine growing (seen nearly edge-on)
 
   double distance(const Eigen::Vector3d& x) const { return normal.dot(x) + offset_m; }
 };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/planes/grazing_growth.h"
 #include "core/planes/plane_growing.h"
 
 namespace tunnelmap {
@@ -104,21 +105,18 @@ void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
 }
 
 void RegionGrower::reset_unlabelled(const OrganizedCloud& cloud, const GrowOptions& o,
-                                    const std::vector<std::int32_t>& labels,
-                                    const std::vector<std::uint8_t>& may_seed) {
+                                    const std::vector<std::uint8_t>& states) {
   configure(cloud, o);
   packed_valid_ = false;
-  const float* n = cloud.normals.data()->data();
   for (int v = 0; v < h_; ++v) {
     std::int32_t* row = labels_.data() + padded(0, v);
     std::uint8_t* tried = tried_.data() + padded(0, v);
     const std::size_t base = static_cast<std::size_t>(v) * w_;
+    const std::uint8_t* sr = states.data() + base;
     for (int u = 0; u < w_; ++u) {
-      const bool joinable = labels[base + u] == 0 && n[3 * (base + u)] == n[3 * (base + u)];
-      // A plane's pixel keeps its id as -(id + 1) (< kNoNormal): never free, but adjacent_planes
-      // can name it.
-      row[u] = joinable ? kFree : labels[base + u] > 0 ? -labels[base + u] - 1 : kNoNormal;
-      tried[u] = !may_seed[base + u];  // "tried" pixels never seed, but may still join
+      // "Tried" pixels never seed, but may still join.
+      row[u] = sr[u] != kEdgeOnTaken ? kFree : kNoNormal;
+      tried[u] = sr[u] != kEdgeOnSeed;
     }
   }
 }
@@ -234,23 +232,6 @@ void RegionGrower::grow_generic(std::int32_t id, PlaneModel& model) {
       bbox_v0 = std::min(bbox_v0, qv), bbox_v1 = std::max(bbox_v1, qv);
     }
   }
-}
-
-int RegionGrower::adjacent_planes(std::int32_t* ids, int max) const {
-  int n = 0;
-  const int steps[4] = {-1, 1, -pw_, pw_};
-  for (const Member& m : queue_)
-    for (int s : steps) {
-      const std::int32_t l = labels_[m.padded + s];
-      if (l >= kNoNormal) continue;  // free, this region, or no normal
-      const std::int32_t id = -l - 1;
-      if (std::find(ids, ids + n, id) == ids + n && n < max) ids[n++] = id;
-    }
-  return n;
-}
-
-void RegionGrower::mark_members(std::int32_t id) {
-  for (const Member& m : queue_) labels_[m.padded] = -id - 1;
 }
 
 void RegionGrower::release() {

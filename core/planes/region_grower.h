@@ -27,12 +27,12 @@ class RegionGrower {
   // Prepares the label image for `cloud` (pixels without a normal can never join).
   void reset(const OrganizedCloud& cloud, const GrowOptions& options);
 
-  // For a fine pass after coarse-to-fine growing: only pixels with a normal and label 0 in
-  // `labels` (full resolution) can join a plane, and only those with `may_seed` set can seed.
+  // For the edge-on pass after coarse-to-fine growing (grazing_growth.h): only pixels whose
+  // state is kEdgeOnJoinable or kEdgeOnSeed can join a plane, only kEdgeOnSeed ones can seed.
   // Growth reads the cloud directly: the pass touches few pixels, and packing the whole frame
   // would cost more than it saves.
   void reset_unlabelled(const OrganizedCloud& cloud, const GrowOptions& options,
-                        const std::vector<std::int32_t>& labels, const std::vector<std::uint8_t>& may_seed);
+                        const std::vector<std::uint8_t>& states);
 
   // Tries to seed at (u, v): a 2x2 block of free, never-tried pixels whose normals agree within
   // lambda and whose points lie within epsilon of the plane through their mean (the paper's
@@ -45,12 +45,6 @@ class RegionGrower {
 
   const std::vector<Member>& members() const { return queue_; }
   int bbox_u0 = 0, bbox_v0 = 0, bbox_u1 = 0, bbox_v1 = 0;
-
-  // After reset_unlabelled: the planes (ids of `labels`, or given to mark_members) whose pixels
-  // are 4-adjacent to the current members; at most `max` of them, in `ids`. Returns the count.
-  int adjacent_planes(std::int32_t* ids, int max) const;
-  // The current members now belong to plane `id` (for adjacent_planes of later regions).
-  void mark_members(std::int32_t id);
 
   // A rejected region's pixels become free again but never seed again.
   void release();

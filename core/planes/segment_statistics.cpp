@@ -9,6 +9,7 @@ namespace tunnelmap {
 void fill_segment_statistics(PlaneSegment& plane, const PlaneModel& model, const GrowOptions& options,
                              double fxfy) {
   plane.contour.clear();
+  plane.edge_on = false;
   plane.points = static_cast<int>(model.count());
   plane.centroid = model.mean_point();
   plane.mean_normal = model.mean_normal().normalized();

@@ -88,7 +88,8 @@ nlohmann::json planes_frame_json(std::size_t index, const std::string& source,
                     {"points", p.points},
                     {"area_m2", round_to(p.area_m2, 1e-6)},
                     {"rms_m", round_to(p.rms_m, 1e-6)},
-                    {"contour_vertices", p.contour.size()}});
+                    {"contour_vertices", p.contour.size()},
+                    {"edge_on", p.edge_on}});
   }
   j["planes"] = list;
   j["timings_ms"] = timings_json(timings_ms);
