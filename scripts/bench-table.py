@@ -13,6 +13,7 @@ from collections import OrderedDict
 PEERS = [
     ("TunnelMap plane extraction (default, grid step 2)", "BM_PlaneExtraction"),
     ("TunnelMap detection (default)", "BM_Detection"),
+    ("TunnelMap plane extraction without the edge-on pass", "BM_PlaneExtractionNoEdgeOnPass"),
     ("TunnelMap every-pixel plane extraction (grid step 1)", "BM_PlaneExtractionEveryPixel"),
     ("TunnelMap every-pixel detection", "BM_DetectionEveryPixel"),
     ("PCL IINE + OMPS", "BM_PclTotal"),
