@@ -109,3 +109,33 @@ TEST(CloudBuilder, RangeLimitsAndInvalidDepthBecomeNaN) {
   const float expected_x = static_cast<float>((2 - f.intrinsics.cx) / f.intrinsics.fx);
   EXPECT_FLOAT_EQ(cloud.points[2].x(), expected_x);
 }
+
+TEST(IntegralNormals, EveryColumnOfAnOddWidthFrameGetsItsNormal) {
+  // The normals are computed four pixels at a time: a width that is not a multiple of four
+  // (37) exercises the row tails, and the frame's last pixel, whose store must not overrun.
+  Intrinsics K;
+  K.width = 37, K.height = 29, K.fx = K.fy = 40.0, K.cx = 18.0, K.cy = 14.0;
+  DepthFrame f = DepthFrame::blank_mm(K);
+  // A plane tilted about the image's vertical axis: z = 1.5 + 0.4 x.
+  for (int v = 0; v < K.height; ++v)
+    for (int u = 0; u < K.width; ++u) {
+      const double ray_x = (u - K.cx) / K.fx;
+      f.depth[static_cast<std::size_t>(v) * K.width + u] = static_cast<float>(1000.0 * 1.5 / (1.0 - 0.4 * ray_x));
+    }
+  OrganizedCloud cloud;
+  build_cloud(f, CloudOptions{0.1, 20.0}, cloud);
+  estimate_normals(NormalOptions{}, cloud);
+  ASSERT_EQ(cloud.normals.size(), 37u * 29u);
+  const Eigen::Vector3d expected = Eigen::Vector3d(0.4, 0.0, -1.0).normalized();  // facing the camera
+  int with_normal = 0;
+  double worst = 0;
+  for (const Eigen::Vector3f& n : cloud.normals) {
+    if (n.x() != n.x()) continue;
+    ++with_normal;
+    worst = std::max(worst, angle_deg(n.cast<double>(), expected));
+  }
+  EXPECT_EQ(with_normal, 37 * 29);  // one-sided tangents reach every border pixel
+  EXPECT_LT(worst, 0.05);
+  const Eigen::Vector3f& last = cloud.normals.back();
+  EXPECT_NEAR(last.cast<double>().dot(expected), 1.0, 1e-5);
+}

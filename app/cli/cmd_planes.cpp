@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <opencv2/imgcodecs.hpp>
 
 #include "app/cli/commands.h"
@@ -65,7 +66,9 @@ int run_planes(const PlanesOptions& o) {
   const int repeat = o.repeat;
   auto work = [params, repeat](const DepthFrame& frame, FrameResult& r) {
     OrganizedCloud& cloud = r.cloud;
-    std::vector<double> t_cloud, t_normals, t_planes, t_total;
+    // Every stage's time (cloud, normals, planes and the planes' own sub-stages: grow, refine,
+    // edge_on, contours), reported as the median over the repeats.
+    std::map<std::string, std::vector<double>> samples;
     for (int k = 0; k < repeat; ++k) {
       cloud.timings_ms.clear();
       const auto start = std::chrono::steady_clock::now();
@@ -75,15 +78,12 @@ int run_planes(const PlanesOptions& o) {
       }
       estimate_normals(normal_options(params), cloud);
       r.planes = extract_planes(cloud, grow_options(params));
-      t_total.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      t_cloud.push_back(cloud.timings_ms["cloud"]);
-      t_normals.push_back(cloud.timings_ms["normals"]);
-      t_planes.push_back(r.planes.timings_ms["planes"]);
+      samples["total"].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      for (const StageTimings* stages : {&cloud.timings_ms, &r.planes.timings_ms})
+        for (const auto& [stage, ms] : *stages) samples[stage].push_back(ms);
     }
-    r.timings_ms = {{"cloud", median(t_cloud)},
-                    {"normals", median(t_normals)},
-                    {"planes", median(t_planes)},
-                    {"total", median(t_total)}};
+    r.timings_ms.clear();
+    for (auto& [stage, values] : samples) r.timings_ms[stage] = median(values);
   };
   SequenceOptions seq;
   seq.threads = o.threads;

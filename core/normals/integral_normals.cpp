@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -21,49 +22,51 @@ namespace {
 // working set stays in the cache instead of making seven passes over ~5 MB images.
 struct Scratch {
   std::vector<float> q_ring;     // quadruples of the last rows (x, y, z, 1; 0 where invalid)
-  std::vector<float> mean_ring;  // box means of the last rows (support 1 or 0)
+  std::vector<float> mean_ring;  // box means of the last rows, channel planes x, y, z, support (1 or 0)
+  std::vector<float> mean_aos;   // the current row's means as quadruples, before the transpose
+  std::vector<float> no_means;   // a row of zero support, above and below the image
   std::vector<float> inv_ring;   // inverse depth of the last rows, 0 = no measurement
   std::vector<float> acc;        // vertical box sums of the current row (4 per pixel)
   std::vector<std::uint8_t> edges, row_dilated, near_edge;  // full images, one byte per pixel
   std::vector<int> edge_count;
 };
 
-// The support lane (w) of a quadruple broadcast as an all-ones / all-zeros mask.
-inline __m128 has_support(__m128 q) {
-  return _mm_cmpgt_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)), _mm_setzero_ps());
-}
 inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
   return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
 
-// Tangent between the box means at a (before) and b (after) the centre c: central where both
-// sides have support, else one-sided against the centre, so normals reach up to holes. `ok`
-// tells whether any tangent exists.
-inline __m128 tangent(__m128 a, __m128 c, __m128 b, bool& ok) {
-  const __m128 sa = has_support(a), sb = has_support(b), sc = has_support(c);
-  const int fa = _mm_movemask_ps(sa) & 1, fb = _mm_movemask_ps(sb) & 1, fc = _mm_movemask_ps(sc) & 1;
-  ok = (fa & fb) | (fc & (fa | fb));
-  return _mm_sub_ps(select(sb, b, c), select(sa, a, c));
+// Four pixels' (x, y, z) triples (12 floats) to x, y and z vectors.
+inline void load_xyz4(const float* p, __m128& x, __m128& y, __m128& z) {
+  const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4), c = _mm_loadu_ps(p + 8);
+  // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3
+  const __m128 bc_x = _mm_shuffle_ps(b, c, _MM_SHUFFLE(0, 1, 0, 2));  // x2 . x3 .
+  const __m128 ab_y = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 0, 1));  // y0 . y1 .
+  const __m128 bc_y = _mm_shuffle_ps(b, c, _MM_SHUFFLE(0, 2, 0, 3));  // y2 . y3 .
+  const __m128 ab_z = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 1, 0, 2));  // z0 . z1 .
+  const __m128 cc_z = _mm_shuffle_ps(c, c, _MM_SHUFFLE(0, 3, 0, 0));  // z2 . z3 .
+  x = _mm_shuffle_ps(a, bc_x, _MM_SHUFFLE(2, 0, 3, 0));
+  y = _mm_shuffle_ps(ab_y, bc_y, _MM_SHUFFLE(2, 0, 2, 0));
+  z = _mm_shuffle_ps(ab_z, cc_z, _MM_SHUFFLE(2, 0, 2, 0));
 }
 
-// Unit normal from the row tangent tu and column tangent tv (cross product tv x tu), facing
-// the camera from point p (lane 3 ignored); NaN when degenerate. All in registers.
-inline __m128 normal_from_tangents(__m128 tu, __m128 tv, __m128 p, bool ok) {
-  const __m128 a_yzx = _mm_shuffle_ps(tv, tv, _MM_SHUFFLE(3, 0, 2, 1));
-  const __m128 a_zxy = _mm_shuffle_ps(tv, tv, _MM_SHUFFLE(3, 1, 0, 2));
-  const __m128 b_yzx = _mm_shuffle_ps(tu, tu, _MM_SHUFFLE(3, 0, 2, 1));
-  const __m128 b_zxy = _mm_shuffle_ps(tu, tu, _MM_SHUFFLE(3, 1, 0, 2));
-  const __m128 cr = _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(a_zxy, b_yzx));  // lane 3 = 0
-  auto dot3 = [](__m128 x, __m128 y) {  // x.y over lanes 0..2, in lane 0
-    const __m128 m = _mm_mul_ps(x, y);
-    return _mm_add_ss(_mm_add_ss(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 1, 1, 1))),
-                      _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 2, 2, 2)));
-  };
-  const float len2 = _mm_cvtss_f32(dot3(cr, cr));
-  if (!ok || !(len2 > 0.0f)) return _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());
-  float k = 1.0f / std::sqrt(len2);
-  if (_mm_cvtss_f32(dot3(cr, p)) > 0.0f) k = -k;  // face the camera: n.p < 0
-  return _mm_mul_ps(cr, _mm_set1_ps(k));
+// Box means of four pixels, one vector per channel; `s` is all-ones where a mean exists.
+struct Means4 {
+  __m128 x, y, z, s;
+  static Means4 load(const float* const planes[4], int u) {
+    return {_mm_loadu_ps(planes[0] + u), _mm_loadu_ps(planes[1] + u), _mm_loadu_ps(planes[2] + u),
+            _mm_cmpgt_ps(_mm_loadu_ps(planes[3] + u), _mm_setzero_ps())};
+  }
+};
+
+// Tangent between the box means at a (before) and b (after) the centre c, four pixels at once:
+// central where both sides have support, else one-sided against the centre, so normals reach
+// up to holes. `ok` is all-ones where any tangent exists.
+inline void tangent4(const Means4& a, const Means4& c, const Means4& b, __m128& tx, __m128& ty, __m128& tz,
+                     __m128& ok) {
+  ok = _mm_or_ps(_mm_and_ps(a.s, b.s), _mm_and_ps(c.s, _mm_or_ps(a.s, b.s)));
+  tx = _mm_sub_ps(select(b.s, b.x, c.x), select(a.s, a.x, c.x));
+  ty = _mm_sub_ps(select(b.s, b.y, c.y), select(a.s, a.y, c.y));
+  tz = _mm_sub_ps(select(b.s, b.z, c.z), select(a.s, a.z, c.z));
 }
 
 }  // namespace
@@ -94,26 +97,122 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
   const int lag = std::max(r1 + r, 1 + R);
   const int q_rows = side + 2, mean_rows = lag - r1 + r + 2, inv_rows = 4;
   const std::size_t row4 = 4 * static_cast<std::size_t>(w);
+  // Mean rows are stored as four channel planes (x, y, z, support) so that the normals stage
+  // loads four pixels' channels with one instruction each. Each plane has `mpad` zero pixels
+  // (no support) on both sides: the gradient's neighbours at u +- r need no bounds tests.
+  const int w4 = (w + 3) & ~3;
+  const int mpad = (r + 3) & ~3;
+  const std::size_t mplane = static_cast<std::size_t>(w4 + 2 * mpad), mrow = 4 * mplane;
 
   thread_local Scratch s;
   s.q_ring.resize(q_rows * row4);
-  s.mean_ring.resize(mean_rows * row4);
+  s.mean_ring.assign(mean_rows * mrow, 0.0f);  // the pads stay zero: only [0, w) is written
+  s.mean_aos.assign(4 * static_cast<std::size_t>(w4), 0.0f);
+  s.no_means.assign(mrow, 0.0f);
   s.inv_ring.resize(inv_rows * static_cast<std::size_t>(w));
   s.acc.resize(row4);
   s.edges.resize(n), s.row_dilated.resize(n), s.near_edge.resize(n);
   s.edge_count.assign(w, 0);
   auto q_row = [&](int i) { return s.q_ring.data() + (i % q_rows) * row4; };
-  auto mean_row = [&](int i) { return s.mean_ring.data() + (i % mean_rows) * row4; };
+  // Channel plane c of mean row i, at pixel 0.
+  auto mean_plane = [&](int i, int c) { return s.mean_ring.data() + (i % mean_rows) * mrow + c * mplane + mpad; };
   auto inv_row = [&](int i) { return s.inv_ring.data() + (i % inv_rows) * static_cast<std::size_t>(w); };
   const float* pts = cloud.points.data()->data();
   float* out = cloud.normals.data()->data();
+
+  // Normals of row v, four pixels at a time: the cross product of the column and row tangents,
+  // unit length, facing the camera; NaN without a point, near an edge or without tangents.
+  const auto normals_row = [&](int v) {
+    const float* mid[4];
+    const float* top[4];
+    const float* bottom[4];
+    for (int c = 0; c < 4; ++c) {
+      mid[c] = mean_plane(v, c);
+      top[c] = v - r >= 0 ? mean_plane(v - r, c) : s.no_means.data() + c * mplane + mpad;
+      bottom[c] = v + r < h ? mean_plane(v + r, c) : s.no_means.data() + c * mplane + mpad;
+    }
+    const std::uint8_t* near_row = s.near_edge.data() + static_cast<std::size_t>(v) * w;
+    const float* p = pts + 3 * static_cast<std::size_t>(v) * w;
+    float* o = out + 3 * static_cast<std::size_t>(v) * w;
+    const __m128 nan4 = _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());
+    const __m128 sign = _mm_set1_ps(-0.0f), zero = _mm_setzero_ps();
+    for (int u = 0; u < w; u += 4) {
+      const int lanes = std::min(4, w - u);
+      __m128 px, py, pz;
+      std::uint32_t near4 = 0x01010101u;  // missing lanes count as near an edge
+      if (lanes == 4) {
+        load_xyz4(p + 3 * u, px, py, pz);
+        std::memcpy(&near4, near_row + u, 4);
+      } else {
+        float tail[12];
+        std::fill(tail, tail + 12, std::numeric_limits<float>::quiet_NaN());
+        std::copy(p + 3 * u, p + 3 * (u + lanes), tail);
+        load_xyz4(tail, px, py, pz);
+        std::memcpy(&near4, near_row + u, lanes);
+      }
+      const __m128i near_bytes = _mm_cvtsi32_si128(static_cast<int>(near4));
+      const __m128i near32 = _mm_unpacklo_epi16(_mm_unpacklo_epi8(near_bytes, _mm_setzero_si128()), _mm_setzero_si128());
+      const __m128 far_from_edge = _mm_castsi128_ps(_mm_cmpeq_epi32(near32, _mm_setzero_si128()));
+
+      const Means4 c = Means4::load(mid, u);
+      __m128 ux, uy, uz, ok_u, vx, vy, vz, ok_v;
+      tangent4(Means4::load(mid, u - r), c, Means4::load(mid, u + r), ux, uy, uz, ok_u);
+      tangent4(Means4::load(top, u), c, Means4::load(bottom, u), vx, vy, vz, ok_v);
+      // n = tv x tu
+      const __m128 nx = _mm_sub_ps(_mm_mul_ps(vy, uz), _mm_mul_ps(vz, uy));
+      const __m128 ny = _mm_sub_ps(_mm_mul_ps(vz, ux), _mm_mul_ps(vx, uz));
+      const __m128 nz = _mm_sub_ps(_mm_mul_ps(vx, uy), _mm_mul_ps(vy, ux));
+      const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, nx), _mm_mul_ps(ny, ny)), _mm_mul_ps(nz, nz));
+      // 1/|n| by the estimate plus one Newton step (relative error ~1e-7, no divide latency);
+      // its sign turns n towards the camera (n.p < 0).
+      const __m128 y0 = _mm_rsqrt_ps(len2);
+      __m128 k = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), y0),
+                            _mm_sub_ps(_mm_set1_ps(3.0f), _mm_mul_ps(len2, _mm_mul_ps(y0, y0))));
+      const __m128 n_dot_p = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, px), _mm_mul_ps(ny, py)), _mm_mul_ps(nz, pz));
+      k = _mm_xor_ps(k, _mm_and_ps(_mm_cmpgt_ps(n_dot_p, zero), sign));
+      const __m128 valid = _mm_and_ps(_mm_and_ps(_mm_and_ps(ok_u, ok_v), _mm_cmpgt_ps(len2, zero)),
+                                      _mm_and_ps(_mm_cmpord_ps(px, px), far_from_edge));
+      __m128 rx = select(valid, _mm_mul_ps(nx, k), nan4);
+      __m128 ry = select(valid, _mm_mul_ps(ny, k), nan4);
+      __m128 rz = select(valid, _mm_mul_ps(nz, k), nan4);
+      __m128 rw = zero;
+      _MM_TRANSPOSE4_PS(rx, ry, rz, rw);  // now one (nx, ny, nz, 0) per pixel
+      float* ou = o + 3 * u;
+      if (lanes == 4 && (v + 1 < h || u + 4 < w)) {
+        // Overlapping stores: each one's 4th lane is overwritten by the next pixel's x; the
+        // last one's lands on the next group's first pixel, written after.
+        _mm_storeu_ps(ou, rx), _mm_storeu_ps(ou + 3, ry), _mm_storeu_ps(ou + 6, rz), _mm_storeu_ps(ou + 9, rw);
+      } else {
+        alignas(16) float f[16];
+        _mm_store_ps(f, rx), _mm_store_ps(f + 4, ry), _mm_store_ps(f + 8, rz), _mm_store_ps(f + 12, rw);
+        for (int i = 0; i < lanes; ++i) ou[3 * i] = f[4 * i], ou[3 * i + 1] = f[4 * i + 1], ou[3 * i + 2] = f[4 * i + 2];
+      }
+    }
+  };
 
   for (int t = 0; t < h + lag; ++t) {
     if (t < h) {  // ingest
       const float* p = pts + 3 * static_cast<std::size_t>(t) * w;
       float* q = q_row(t);
       float* inv = inv_row(t);
-      for (int u = 0; u < w; ++u) {
+      int u = 0;
+      // Four pixels at a time: xyz triples to x, y, z vectors, one divide for four inverse
+      // depths, then back to (x, y, z, support) quadruples by a 4x4 transpose.
+      for (; u + 4 <= w; u += 4) {
+        const float* pu = p + 3 * u;
+        __m128 x, y, z;
+        load_xyz4(pu, x, y, z);
+        const __m128 ok = _mm_cmpord_ps(x, x);
+        x = _mm_and_ps(ok, x), y = _mm_and_ps(ok, y), z = _mm_and_ps(ok, z);
+        __m128 wv = _mm_and_ps(ok, _mm_set1_ps(1.0f));
+        _mm_storeu_ps(inv + u, _mm_and_ps(ok, _mm_div_ps(_mm_set1_ps(1.0f), z)));
+        _MM_TRANSPOSE4_PS(x, y, z, wv);
+        _mm_storeu_ps(q + 4 * u, x);
+        _mm_storeu_ps(q + 4 * u + 4, y);
+        _mm_storeu_ps(q + 4 * u + 8, z);
+        _mm_storeu_ps(q + 4 * u + 12, wv);
+      }
+      for (; u < w; ++u) {
         const float x = p[3 * u], y = p[3 * u + 1], z = p[3 * u + 2];
         const bool ok = x == x;
         q[4 * u] = ok ? x : 0.0f;
@@ -172,7 +271,7 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
         else if (sub)
           for (std::size_t x = 0; x < row4; ++x) acc[x] -= sub[x];
       }
-      float* m = mean_row(j);
+      float* m = s.mean_aos.data();
       const __m128 min_count4 = _mm_set1_ps(min_count), one4 = _mm_set1_ps(1.0f);
       const __m128 lane3 = _mm_castsi128_ps(_mm_set_epi32(-1, 0, 0, 0));
       __m128 sum = _mm_setzero_ps();
@@ -188,8 +287,22 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
         // Mean = sum / support where the support reaches the minimum; lane 3 becomes 1 or 0.
         const __m128 cnt = _mm_shuffle_ps(sum, sum, _MM_SHUFFLE(3, 3, 3, 3));
         const __m128 ok = _mm_cmpge_ps(cnt, min_count4);
-        const __m128 mean = _mm_and_ps(ok, _mm_div_ps(sum, cnt));
+        __m128 rcp = _mm_rcp_ps(cnt);  // 1/count: estimate + one Newton step, no divide latency
+        rcp = _mm_mul_ps(rcp, _mm_sub_ps(_mm_set1_ps(2.0f), _mm_mul_ps(cnt, rcp)));
+        const __m128 mean = _mm_and_ps(ok, _mm_mul_ps(sum, rcp));
         _mm_storeu_ps(m + 4 * u, select(lane3, _mm_and_ps(ok, one4), mean));
+      }
+      // Quadruples to channel planes, four pixels at a time (the tail of mean_aos is zero).
+      float* mx = mean_plane(j, 0);
+      float* my = mean_plane(j, 1);
+      float* mz = mean_plane(j, 2);
+      float* ms = mean_plane(j, 3);
+      for (int u = 0; u < w4; u += 4) {
+        __m128 q0 = _mm_loadu_ps(m + 4 * u), q1 = _mm_loadu_ps(m + 4 * u + 4);
+        __m128 q2 = _mm_loadu_ps(m + 4 * u + 8), q3 = _mm_loadu_ps(m + 4 * u + 12);
+        _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+        _mm_storeu_ps(mx + u, q0), _mm_storeu_ps(my + u, q1);
+        _mm_storeu_ps(mz + u, q2), _mm_storeu_ps(ms + u, q3);
       }
     }
     if (const int ne = t - 1 - R; ne >= 0 && ne < h) {
@@ -211,41 +324,7 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
       std::uint8_t* o = s.near_edge.data() + static_cast<std::size_t>(ne) * w;
       for (int u = 0; u < w; ++u) o[u] = count[u] > 0;
     }
-    if (const int v = t - lag; v >= 0 && v < h) {
-      // A side outside the image reads as "no support": a one-sided tangent (or none).
-      const float* mid = mean_row(v);
-      const float* top = v - r >= 0 ? mean_row(v - r) : nullptr;
-      const float* bottom = v + r < h ? mean_row(v + r) : nullptr;
-      const std::uint8_t* near = s.near_edge.data() + static_cast<std::size_t>(v) * w;
-      const float* p = pts + 3 * static_cast<std::size_t>(v) * w;
-      float* o = out + 3 * static_cast<std::size_t>(v) * w;
-      for (int u = 0; u < w; ++u) {
-        float* ou = o + 3 * u;
-        if (!(p[3 * u] == p[3 * u]) || near[u]) {
-          ou[0] = ou[1] = ou[2] = nan;
-          continue;
-        }
-        const __m128 c = _mm_loadu_ps(mid + 4 * u);
-        const __m128 a = u - r >= 0 ? _mm_loadu_ps(mid + 4 * (u - r)) : _mm_setzero_ps();
-        const __m128 b = u + r < w ? _mm_loadu_ps(mid + 4 * (u + r)) : _mm_setzero_ps();
-        const __m128 up = top ? _mm_loadu_ps(top + 4 * u) : _mm_setzero_ps();
-        const __m128 down = bottom ? _mm_loadu_ps(bottom + 4 * u) : _mm_setzero_ps();
-        bool ok_u, ok_v;
-        const __m128 tu = tangent(a, c, b, ok_u);
-        const __m128 tv = tangent(up, c, down, ok_v);
-        const __m128 point = _mm_setr_ps(p[3 * u], p[3 * u + 1], p[3 * u + 2], 0.0f);
-        const __m128 nrm = normal_from_tangents(tu, tv, point, ok_u && ok_v);
-        // Three floats out: the 4th lane spills onto the next pixel's x, which is written after
-        // (not for the frame's last pixel, which has no next).
-        if (v + 1 < h || u + 1 < w) {
-          _mm_storeu_ps(ou, nrm);
-        } else {
-          alignas(16) float f[4];
-          _mm_store_ps(f, nrm);
-          ou[0] = f[0], ou[1] = f[1], ou[2] = f[2];
-        }
-      }
-    }
+    if (const int v = t - lag; v >= 0 && v < h) normals_row(v);
   }
 }
 

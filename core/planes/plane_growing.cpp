@@ -36,11 +36,15 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
       PlaneModel model;
       if (!grower.seed(u, v, model)) continue;
       grower.grow(u, v, next_id, model);  // `model` already holds the seed block
+      if (model.count() < options.min_points) {  // too small: no statistics needed
+        grower.release();
+        continue;
+      }
       if (kept == out.planes.size()) add_plane_slot(out.planes);
       PlaneSegment& plane = out.planes[kept];
       plane.id = next_id;
       fill_segment_statistics(plane, model, options, fxfy);
-      if (plane.points < options.min_points || plane.area_m2 < options.min_area_m2) {
+      if (plane.area_m2 < options.min_area_m2) {
         grower.release();  // the slot is reused by the next region
         continue;
       }

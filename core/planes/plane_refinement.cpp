@@ -169,17 +169,22 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     planes.planes[kept++].id = id;
   }
   shrink_plane_slots(planes.planes, kept);
+  if (edge_on) {
+    // The pixels of dropped planes are free again: found within each dropped plane's box (a
+    // small plane's box is small), before the relabelling below erases them.
+    for (std::size_t id = 1; id < k; ++id) {
+      if (new_id[id] || u1[id] < 0) continue;
+      for (int v = v0[id]; v <= v1[id]; ++v) {
+        const std::size_t row = static_cast<std::size_t>(v) * w;
+        for (int u = u0[id]; u <= u1[id]; ++u)
+          if (planes.labels[row + u] == static_cast<std::int32_t>(id))
+            (*edge_on)[row + u] = state_of(pts + 3 * (row + u), nrm + 3 * (row + u));
+      }
+    }
+  }
   // Branch-free: new_id[0] = 0 keeps unlabelled pixels unlabelled.
   const std::int32_t* map = new_id.data();
-  if (edge_on) {  // the pixels of dropped planes are free again
-    for (std::size_t i = 0; i < planes.labels.size(); ++i) {
-      std::int32_t& l = planes.labels[i];
-      if (l && !map[l]) (*edge_on)[i] = state_of(pts + 3 * i, nrm + 3 * i);
-      l = map[l];
-    }
-  } else {
-    for (std::int32_t& l : planes.labels) l = map[l];
-  }
+  for (std::int32_t& l : planes.labels) l = map[l];
   for (std::int32_t& l : coarse) l = map[l];
 }
 

@@ -81,6 +81,7 @@ void RegionGrower::configure(const OrganizedCloud& cloud, const GrowOptions& o) 
   labels_.assign(padded_size, kNoNormal);
   tried_.assign(padded_size, 0);
   queue_.reserve(static_cast<std::size_t>(w_) * h_);
+  rejected_.reserve(static_cast<std::size_t>(w_) * h_);
 }
 
 void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
@@ -162,6 +163,9 @@ void RegionGrower::grow(int u, int v, std::int32_t id, PlaneModel& model) {
       default: grow_generic(id, model); break;
     }
   }
+  // The pixels this region rejected are free for the next one.
+  for (const std::int32_t p : rejected_) labels_[p] = kFree;
+  rejected_.clear();
 }
 
 // The hot loop. Visits the window's free pixels in row-major order (the order of the bits),
@@ -191,11 +195,14 @@ void RegionGrower::grow_window(std::int32_t id, PlaneModel& model, const float* 
       const std::size_t qi = S * (static_cast<std::size_t>(qv) * w + qu);
       const float qx = pts[qi], qy = pts[qi + 1], qz = pts[qi + 2];
       const float ex = qx - pix, ey = qy - piy, ez = qz - piz;
-      if (ex * ex + ey * ey + ez * ez > cand2) continue;                     // candidate distance
-      if (std::abs(g.sx * qx + g.sy * qy + g.sz * qz - g.d0) > g.tol_d) continue;  // eq. 2, distance
-      const float nx = nrm[qi], ny = nrm[qi + 1], nz = nrm[qi + 2];
-      if (g.sx * nx + g.sy * ny + g.sz * nz < g.tol_n) continue;               // eq. 2, angle
+      if (ex * ex + ey * ey + ez * ez > cand2) continue;  // candidate distance: depends on m, retest
       const std::int32_t qp = m.padded + dv * pw + du;
+      const float nx = nrm[qi], ny = nrm[qi + 1], nz = nrm[qi + 2];
+      if (std::abs(g.sx * qx + g.sy * qy + g.sz * qz - g.d0) > g.tol_d ||  // eq. 2, distance
+          g.sx * nx + g.sy * ny + g.sz * nz < g.tol_n) {                   // eq. 2, angle
+        if (model.count() >= kSettledModel) reject(qp);
+        continue;
+      }
       labels[qp] = id;
       model.add(Eigen::Vector3f(qx, qy, qz), Eigen::Vector3f(nx, ny, nz));  // eq. 4
       g.refresh(model, eps, cos_angle);
@@ -221,9 +228,12 @@ void RegionGrower::grow_generic(std::int32_t id, PlaneModel& model) {
       const int qu = m.u + step_u_[k], qv = m.v + step_v_[k];
       const Eigen::Vector3f& q = cloud_->points[cloud_->index(qu, qv)];
       if ((q - pi).squaredNorm() > cand2_) continue;
-      if (std::abs(g.sx * q.x() + g.sy * q.y() + g.sz * q.z() - g.d0) > g.tol_d) continue;
       const Eigen::Vector3f& nq = cloud_->normals[cloud_->index(qu, qv)];
-      if (g.sx * nq.x() + g.sy * nq.y() + g.sz * nq.z() < g.tol_n) continue;
+      if (std::abs(g.sx * q.x() + g.sy * q.y() + g.sz * q.z() - g.d0) > g.tol_d ||
+          g.sx * nq.x() + g.sy * nq.y() + g.sz * nq.z() < g.tol_n) {
+        if (model.count() >= kSettledModel) reject(qp);
+        continue;
+      }
       labels_[qp] = id;
       model.add(q, nq);
       g.refresh(model, eps_, cos_angle_);

@@ -18,6 +18,12 @@ class RegionGrower {
  public:
   static constexpr std::int32_t kNoNormal = -1;  // can never join a plane (also the padding)
   static constexpr std::int32_t kFree = 0;
+  // A pixel that failed the eq. 2 plane tests of the region growing now: the model of a settled
+  // region moves too little for a retest from the next member to pass, so it is not retried
+  // (region growing's "visited" mark; it halves the tests on noisy real frames).
+  static constexpr std::int32_t kRejected = -2;
+  // Until then the model is young (a 2x2 seed's normal can be degrees off): failures are retried.
+  static constexpr long kSettledModel = 64;
 
   struct Member {
     std::int32_t padded;  // index in the padded label image
@@ -65,6 +71,10 @@ class RegionGrower {
   template <int H, int S>
   void grow_window(std::int32_t id, PlaneModel& model, const float* pts, const float* nrm);
   void grow_generic(std::int32_t id, PlaneModel& model);
+  void reject(std::int32_t padded_index) {
+    labels_[padded_index] = kRejected;
+    rejected_.push_back(padded_index);
+  }
 
   const OrganizedCloud* cloud_ = nullptr;
   int w_ = 0, h_ = 0, pad_ = 0, pw_ = 0, half_ = 2;
@@ -73,6 +83,7 @@ class RegionGrower {
   std::vector<std::int32_t> labels_;  // padded
   std::vector<std::uint8_t> tried_;   // padded
   std::vector<Member> queue_;
+  std::vector<std::int32_t> rejected_;  // padded indices marked kRejected by the current region
   std::vector<float> packed_;  // per pixel x, y, z, -, nx, ny, nz, -: one cache line half per candidate
   std::vector<int> offsets_;                   // padded index steps of the window
   std::vector<int> step_u_, step_v_;  // the same steps in pixels
