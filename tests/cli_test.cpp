@@ -91,6 +91,12 @@ TEST(Cli, PlanesReportsPlanesMedianTimingsAndALabelImage) {
     EXPECT_GE(p["area_m2"].get<double>(), 0.004);
   }
   for (const char* t : {"normals", "planes", "total"}) EXPECT_GT(f["timings_ms"][t].get<double>(), 0.0) << t;
+  // The plane stage's parts (coarse-to-fine by default), each within the stage's time.
+  for (const char* t : {"grow", "refine", "contours"}) {
+    ASSERT_TRUE(f["timings_ms"].contains(t)) << t;
+    EXPECT_GT(f["timings_ms"][t].get<double>(), 0.0) << t;
+    EXPECT_LE(f["timings_ms"][t].get<double>(), f["timings_ms"]["planes"].get<double>() * 1.05) << t;
+  }
   const cv::Mat labels = cv::imread(tmp.file("labels.png"), cv::IMREAD_ANYDEPTH);
   ASSERT_EQ(labels.type(), CV_16UC1);
   double max_label = 0;
