@@ -4,6 +4,7 @@
 
 #include "core/normals/cloud_builder.h"
 #include "core/normals/integral_normals.h"
+#include "core/util/sse_xyz.h"
 #include "tests/support/synthetic_scene.h"
 
 using namespace tunnelmap;
@@ -138,4 +139,20 @@ TEST(IntegralNormals, EveryColumnOfAnOddWidthFrameGetsItsNormal) {
   EXPECT_LT(worst, 0.05);
   const Eigen::Vector3f& last = cloud.normals.back();
   EXPECT_NEAR(last.cast<double>().dot(expected), 1.0, 1e-5);
+}
+
+TEST(SseXyz, FourTriplesSplitIntoCoordinatesAndBack) {
+  float in[12], out[12];
+  for (int i = 0; i < 12; ++i) in[i] = static_cast<float>(i + 1);  // x0 y0 z0 x1 ...
+  __m128 x, y, z;
+  load_xyz4(in, x, y, z);
+  alignas(16) float xs[4], ys[4], zs[4];
+  _mm_store_ps(xs, x), _mm_store_ps(ys, y), _mm_store_ps(zs, z);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(xs[i], in[3 * i]);
+    EXPECT_EQ(ys[i], in[3 * i + 1]);
+    EXPECT_EQ(zs[i], in[3 * i + 2]);
+  }
+  store_xyz4(out, x, y, z);
+  for (int i = 0; i < 12; ++i) EXPECT_EQ(out[i], in[i]) << i;
 }

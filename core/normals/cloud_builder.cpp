@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/util/sse_xyz.h"
+
 namespace tunnelmap {
 
 void build_cloud(const DepthFrame& frame, const CloudOptions& options, OrganizedCloud& cloud) {
@@ -21,16 +23,28 @@ void build_cloud(const DepthFrame& frame, const CloudOptions& options, Organized
   kx.resize(w), ky.resize(h);
   for (int u = 0; u < w; ++u) kx[u] = static_cast<float>((u - frame.intrinsics.cx) / frame.intrinsics.fx);
   for (int v = 0; v < h; ++v) ky[v] = static_cast<float>((v - frame.intrinsics.cy) / frame.intrinsics.fy);
+  const __m128 to_m4 = _mm_set1_ps(to_m), zmin4 = _mm_set1_ps(zmin), zmax4 = _mm_set1_ps(zmax);
+  const __m128 nan4 = _mm_set1_ps(nan), zero4 = _mm_setzero_ps();
   for (int v = 0; v < h; ++v) {
     const float* d = frame.depth.data() + static_cast<std::size_t>(v) * w;
-    Eigen::Vector3f* p = cloud.points.data() + static_cast<std::size_t>(v) * w;
-    for (int u = 0; u < w; ++u) {
+    float* p = cloud.points.data()->data() + 3 * static_cast<std::size_t>(v) * w;
+    const __m128 ky4 = _mm_set1_ps(ky[v]);
+    int u = 0;
+    // Four pixels at a time, without a branch on the (often scattered) dropouts. The range
+    // test also rejects 0, NaN and inf (ordered comparisons with NaN are false).
+    for (; u + 4 <= w; u += 4) {
+      const __m128 z = _mm_mul_ps(_mm_loadu_ps(d + u), to_m4);
+      const __m128 ok = _mm_and_ps(_mm_and_ps(_mm_cmpge_ps(z, zmin4), _mm_cmple_ps(z, zmax4)), _mm_cmpgt_ps(z, zero4));
+      const auto valid_or_nan = [&](__m128 c) { return _mm_or_ps(_mm_and_ps(ok, c), _mm_andnot_ps(ok, nan4)); };
+      store_xyz4(p + 3 * u, valid_or_nan(_mm_mul_ps(_mm_loadu_ps(kx.data() + u), z)),
+                 valid_or_nan(_mm_mul_ps(ky4, z)), valid_or_nan(z));
+    }
+    for (; u < w; ++u) {
       const float z = d[u] * to_m;
-      // The range test also rejects 0, NaN and inf (comparisons with NaN are false).
-      if (z >= zmin && z <= zmax && z > 0.0f)
-        p[u] = {kx[u] * z, ky[v] * z, z};
-      else
-        p[u] = {nan, nan, nan};
+      const bool ok = z >= zmin && z <= zmax && z > 0.0f;
+      p[3 * u] = ok ? kx[u] * z : nan;
+      p[3 * u + 1] = ok ? ky[v] * z : nan;
+      p[3 * u + 2] = ok ? z : nan;
     }
   }
 }

@@ -11,6 +11,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/util/sse_xyz.h"
+
 namespace tunnelmap {
 
 namespace {
@@ -33,20 +35,6 @@ struct Scratch {
 
 inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
   return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
-}
-
-// Four pixels' (x, y, z) triples (12 floats) to x, y and z vectors.
-inline void load_xyz4(const float* p, __m128& x, __m128& y, __m128& z) {
-  const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4), c = _mm_loadu_ps(p + 8);
-  // a = x0 y0 z0 x1, b = y1 z1 x2 y2, c = z2 x3 y3 z3
-  const __m128 bc_x = _mm_shuffle_ps(b, c, _MM_SHUFFLE(0, 1, 0, 2));  // x2 . x3 .
-  const __m128 ab_y = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 0, 0, 1));  // y0 . y1 .
-  const __m128 bc_y = _mm_shuffle_ps(b, c, _MM_SHUFFLE(0, 2, 0, 3));  // y2 . y3 .
-  const __m128 ab_z = _mm_shuffle_ps(a, b, _MM_SHUFFLE(0, 1, 0, 2));  // z0 . z1 .
-  const __m128 cc_z = _mm_shuffle_ps(c, c, _MM_SHUFFLE(0, 3, 0, 0));  // z2 . z3 .
-  x = _mm_shuffle_ps(a, bc_x, _MM_SHUFFLE(2, 0, 3, 0));
-  y = _mm_shuffle_ps(ab_y, bc_y, _MM_SHUFFLE(2, 0, 2, 0));
-  z = _mm_shuffle_ps(ab_z, cc_z, _MM_SHUFFLE(2, 0, 2, 0));
 }
 
 // Box means of four pixels, one vector per channel; `s` is all-ones where a mean exists.
@@ -172,20 +160,16 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
       k = _mm_xor_ps(k, _mm_and_ps(_mm_cmpgt_ps(n_dot_p, zero), sign));
       const __m128 valid = _mm_and_ps(_mm_and_ps(_mm_and_ps(ok_u, ok_v), _mm_cmpgt_ps(len2, zero)),
                                       _mm_and_ps(_mm_cmpord_ps(px, px), far_from_edge));
-      __m128 rx = select(valid, _mm_mul_ps(nx, k), nan4);
-      __m128 ry = select(valid, _mm_mul_ps(ny, k), nan4);
-      __m128 rz = select(valid, _mm_mul_ps(nz, k), nan4);
-      __m128 rw = zero;
-      _MM_TRANSPOSE4_PS(rx, ry, rz, rw);  // now one (nx, ny, nz, 0) per pixel
+      const __m128 rx = select(valid, _mm_mul_ps(nx, k), nan4);
+      const __m128 ry = select(valid, _mm_mul_ps(ny, k), nan4);
+      const __m128 rz = select(valid, _mm_mul_ps(nz, k), nan4);
       float* ou = o + 3 * u;
-      if (lanes == 4 && (v + 1 < h || u + 4 < w)) {
-        // Overlapping stores: each one's 4th lane is overwritten by the next pixel's x; the
-        // last one's lands on the next group's first pixel, written after.
-        _mm_storeu_ps(ou, rx), _mm_storeu_ps(ou + 3, ry), _mm_storeu_ps(ou + 6, rz), _mm_storeu_ps(ou + 9, rw);
+      if (lanes == 4) {
+        store_xyz4(ou, rx, ry, rz);
       } else {
-        alignas(16) float f[16];
-        _mm_store_ps(f, rx), _mm_store_ps(f + 4, ry), _mm_store_ps(f + 8, rz), _mm_store_ps(f + 12, rw);
-        for (int i = 0; i < lanes; ++i) ou[3 * i] = f[4 * i], ou[3 * i + 1] = f[4 * i + 1], ou[3 * i + 2] = f[4 * i + 2];
+        float tail[12];
+        store_xyz4(tail, rx, ry, rz);
+        std::copy(tail, tail + 3 * lanes, ou);
       }
     }
   };
