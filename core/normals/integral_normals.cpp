@@ -141,6 +141,21 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
       const __m128i near_bytes = _mm_cvtsi32_si128(static_cast<int>(near4));
       const __m128i near32 = _mm_unpacklo_epi16(_mm_unpacklo_epi8(near_bytes, _mm_setzero_si128()), _mm_setzero_si128());
       const __m128 far_from_edge = _mm_castsi128_ps(_mm_cmpeq_epi32(near32, _mm_setzero_si128()));
+      const __m128 wanted = _mm_and_ps(_mm_cmpord_ps(px, px), far_from_edge);
+      float* ou = o + 3 * u;
+      const auto store = [&](__m128 x, __m128 y, __m128 z) {
+        if (lanes == 4) {
+          store_xyz4(ou, x, y, z);
+        } else {
+          float tail[12];
+          store_xyz4(tail, x, y, z);
+          std::copy(tail, tail + 3 * lanes, ou);
+        }
+      };
+      if (_mm_movemask_ps(wanted) == 0) {  // no points or all near edges: common on real frames
+        store(nan4, nan4, nan4);
+        continue;
+      }
 
       const Means4 c = Means4::load(mid, u);
       __m128 ux, uy, uz, ok_u, vx, vy, vz, ok_v;
@@ -158,19 +173,11 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
                             _mm_sub_ps(_mm_set1_ps(3.0f), _mm_mul_ps(len2, _mm_mul_ps(y0, y0))));
       const __m128 n_dot_p = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx, px), _mm_mul_ps(ny, py)), _mm_mul_ps(nz, pz));
       k = _mm_xor_ps(k, _mm_and_ps(_mm_cmpgt_ps(n_dot_p, zero), sign));
-      const __m128 valid = _mm_and_ps(_mm_and_ps(_mm_and_ps(ok_u, ok_v), _mm_cmpgt_ps(len2, zero)),
-                                      _mm_and_ps(_mm_cmpord_ps(px, px), far_from_edge));
+      const __m128 valid = _mm_and_ps(_mm_and_ps(_mm_and_ps(ok_u, ok_v), _mm_cmpgt_ps(len2, zero)), wanted);
       const __m128 rx = select(valid, _mm_mul_ps(nx, k), nan4);
       const __m128 ry = select(valid, _mm_mul_ps(ny, k), nan4);
       const __m128 rz = select(valid, _mm_mul_ps(nz, k), nan4);
-      float* ou = o + 3 * u;
-      if (lanes == 4) {
-        store_xyz4(ou, rx, ry, rz);
-      } else {
-        float tail[12];
-        store_xyz4(tail, rx, ry, rz);
-        std::copy(tail, tail + 3 * lanes, ou);
-      }
+      store(rx, ry, rz);
     }
   };
 

@@ -6,6 +6,7 @@
 
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "sensors/openni/oni_file_source.h"
 #include "sensors/openni/openni_context.h"
 
 namespace tunnelmap::openni2 {
@@ -72,9 +73,17 @@ RecordResult record_oni(const std::string& uri, int frames, const std::string& o
     device.stop();
     recording.finish();
   }
-  if (!failure.empty())
-    throw InputError(device.uri(), failure + "; the " + std::to_string(result.frames) +
+  if (!failure.empty()) {
+    // The recorder takes every frame the device sent; under load the loop above reads fewer
+    // (a live stream keeps only the newest), so the count is the file's own.
+    std::size_t recorded = static_cast<std::size_t>(result.frames);
+    try {
+      recorded = OniFileSource(out_path, ReadOptions()).size();
+    } catch (const InputError&) {  // unreadable: keep the count read
+    }
+    throw InputError(device.uri(), failure + "; the " + std::to_string(recorded) +
                                        " frames recorded so far are in " + out_path);
+  }
   return result;
 }
 
