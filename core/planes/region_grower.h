@@ -20,7 +20,7 @@ class RegionGrower {
   static constexpr std::int32_t kFree = 0;
   // A pixel that failed the eq. 2 plane tests of the region growing now: the model of a settled
   // region moves too little for a retest from the next member to pass, so it is not retried
-  // (region growing's "visited" mark; it halves the tests on noisy real frames).
+  // (region growing's "visited" mark; a third fewer tests on the real cape frame).
   static constexpr std::int32_t kRejected = -2;
   // Until then the model is young (a 2x2 seed's normal can be degrees off): failures are retried.
   static constexpr long kSettledModel = 64;
