@@ -14,7 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   xvfb xauth
-  dpkg-dev file help2man
+  dpkg-dev file help2man poppler-utils
   clang libclang-rt-14-dev
 )
 

@@ -5,16 +5,19 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <cstdio>
+#include <stdexcept>
 #include <sys/wait.h>
 
 #include "core/io/dataset.h"
 #include "core/sim/sensor_model.h"
 #include "core/sim/sim_config_json.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/sim/sim_spec_parse.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/error.h"
 
@@ -400,6 +403,458 @@ TEST(SimTest, CliSimulateWritesADatasetAndRejectsAbsurdValues) {
   EXPECT_TRUE(fs::is_regular_file(dir / "dataset.json"));
   EXPECT_TRUE(fs::is_regular_file(dir / "depth/000000.png"));
   fs::remove_all(dir);
+}
+
+
+// Three sections: 0.84 x 1.30 on [.., 1.5), 0.80 x 1.28 on [1.5, 3.0), 0.82 x 1.32 on [3.0, ..);
+// no end wall, so rays along the axis leave the tunnel unless something stops them.
+SimConfig sectioned_config() {
+  SimConfig c = exact(straight_config());
+  c.sections = {{1.5, 0.84, 1.30}, {1.5, 0.80, 1.28}, {2.0, 0.82, 1.32}};
+  c.end_wall_distance_m.reset();
+  return c;
+}
+
+const SimSurface& named(const TunnelSimulator& sim, const std::string& name) {
+  for (const SimSurface& s : sim.surfaces())
+    if (s.name == name) return s;
+  throw std::runtime_error("no surface " + name);
+}
+
+sim::RayHit cast(const TunnelSimulator& sim, Eigen::Vector3d o, Eigen::Vector3d d) {
+  return sim.geometry().cast(o, d.normalized());
+}
+
+TEST(SimSectionsTest, RaysHitEachSectionsWallsAtItsOwnSize) {
+  const TunnelSimulator sim(sectioned_config());
+  // Straight across: the left middle plate (8 mm thick) of each section.
+  sim::RayHit h = cast(sim, {0.5, 0.0, 0.65}, Eigen::Vector3d::UnitY());
+  EXPECT_EQ(h.surface_id, 2);  // section 0 keeps the constant tunnel's ids
+  EXPECT_NEAR(h.point.y(), 0.42 - 0.008, 1e-12);
+  EXPECT_EQ(h.section, 0);
+  h = cast(sim, {2.0, 0.0, 0.65}, Eigen::Vector3d::UnitY());
+  EXPECT_EQ(h.surface_id, named(sim, "section1/left/middle").id);
+  EXPECT_EQ(h.surface_id, 22);
+  EXPECT_NEAR(h.point.y(), 0.40 - 0.008, 1e-12);
+  EXPECT_EQ(h.section, 1);
+  // Edge band of section 1 (outer plane) and the roof of section 2.
+  h = cast(sim, {2.0, 0.0, 0.05}, Eigen::Vector3d::UnitY());
+  EXPECT_EQ(h.surface_id, named(sim, "section1/left/edge_bottom").id);
+  EXPECT_NEAR(h.point.y(), 0.40, 1e-12);
+  h = cast(sim, {4.0, 0.0, 0.3}, Eigen::Vector3d::UnitZ());
+  EXPECT_EQ(h.surface_id, named(sim, "section2/top/middle").id);
+  EXPECT_EQ(h.surface_id, 48);
+  EXPECT_NEAR(h.point.z(), 1.32 - 0.008, 1e-12);
+  EXPECT_NEAR(h.t, 1.32 - 0.008 - 0.3, 1e-12);
+  // Slanting to the left from x = 1: it would meet section 0's plate at x = 5.12 and section
+  // 1's at 4.92, but both have ended; it meets section 2's (y = 0.402) at x = 5.02.
+  h = cast(sim, {1.0, 0.0, 0.65}, {1.0, 0.1, 0.0});
+  EXPECT_EQ(h.surface_id, named(sim, "section2/left/middle").id);
+  EXPECT_NEAR(h.point.x(), 5.02, 1e-9);
+  EXPECT_NEAR(h.point.y(), 0.402, 1e-12);
+  EXPECT_NEAR(h.t, std::hypot(4.02, 0.402), 1e-9);
+  // The ground-truth planes follow the sections.
+  EXPECT_NEAR(named(sim, "section1/left/middle").offset_world, 0.40 - 0.008, 1e-12);
+  EXPECT_EQ(named(sim, "section1/left/middle").section, 1);
+  EXPECT_NEAR(named(sim, "section2/bottom/middle").offset_world, -0.008, 1e-12);
+}
+
+TEST(SimSectionsTest, JointFacesStopRaysThatMissTheNextSection) {
+  const TunnelSimulator sim(sectioned_config());
+  const SimSurface& j0 = named(sim, "joint/0");
+  const SimSurface& j1 = named(sim, "joint/1");
+  EXPECT_EQ(j0.wall, "joint");
+  EXPECT_EQ(j0.zone, "");
+  EXPECT_EQ(j0.id, 61);  // after the 3 x 20 wall surfaces
+  EXPECT_EQ(j1.id, 62);
+  // Shrinking joint at 1.5 faces back (-X), growing joint at 3.0 faces forward (+X).
+  EXPECT_TRUE(j0.normal_world.isApprox(-Eigen::Vector3d::UnitX()));
+  EXPECT_NEAR(j0.offset_world, 1.5, 1e-12);
+  EXPECT_TRUE(j1.normal_world.isApprox(Eigen::Vector3d::UnitX()));
+  EXPECT_NEAR(j1.offset_world, -3.0, 1e-12);
+  // Along the axis just under section 0's roof plate (z 1.292): section 1's roof plate is at
+  // 1.272, so the ray stops on the joint face at x = 1.5.
+  sim::RayHit h = cast(sim, {0.5, 0.0, 1.29}, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, j0.id);
+  EXPECT_NEAR(h.t, 1.0, 1e-12);
+  EXPECT_NEAR(h.point.x(), 1.5, 1e-12);
+  EXPECT_TRUE(h.normal.isApprox(-Eigen::Vector3d::UnitX()));
+  EXPECT_NEAR(j0.distance(h.point), 0.0, 1e-12);
+  // Beside the left plate (y 0.412 < 0.42) but outside section 1 (0.40): the joint again.
+  h = cast(sim, {0.2, 0.41, 0.65}, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, j0.id);
+  EXPECT_NEAR(h.t, 1.3, 1e-12);
+  // Looking back from section 2 under its roof (1.312): section 1 is lower, joint 1 at x = 3.
+  h = cast(sim, {4.0, 0.0, 1.30}, -Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, j1.id);
+  EXPECT_NEAR(h.t, 1.0, 1e-12);
+  EXPECT_TRUE(h.normal.isApprox(Eigen::Vector3d::UnitX()));
+  // Down the centre line nothing stops the ray (no end wall); into a larger section neither.
+  EXPECT_FALSE(cast(sim, {0.5, 0.0, 0.65}, Eigen::Vector3d::UnitX()).hit());
+  EXPECT_FALSE(cast(sim, {2.0, 0.0, 1.27}, Eigen::Vector3d::UnitX()).hit());
+}
+
+TEST(SimSectionsTest, WidthAndHeightAtAndAroundJoints) {
+  const TunnelSimulator sim(sectioned_config());
+  EXPECT_EQ(sim.joints_x(), (std::vector<double>{1.5, 3.0}));
+  EXPECT_EQ(sim.width_at(-100.0), 0.84);  // the first section continues before its start
+  EXPECT_EQ(sim.width_at(1.5 - 1e-9), 0.84);
+  EXPECT_EQ(sim.width_at(1.5), 0.80);  // a joint belongs to the section after it
+  EXPECT_EQ(sim.height_at(1.5), 1.28);
+  EXPECT_EQ(sim.height_at(3.0 - 1e-9), 1.28);
+  EXPECT_EQ(sim.width_at(3.0), 0.82);
+  EXPECT_EQ(sim.height_at(3.0), 1.32);
+  EXPECT_EQ(sim.height_at(100.0), 1.32);  // the last one continues after its end
+  SimConfig c = sectioned_config();
+  c.sections_start_x_m = -1.0;
+  const TunnelSimulator shifted(c);
+  EXPECT_EQ(shifted.joints_x(), (std::vector<double>{0.5, 2.0}));
+  EXPECT_EQ(shifted.width_at(0.49), 0.84);
+  EXPECT_EQ(shifted.width_at(0.5), 0.80);
+  const TunnelSimulator constant(straight_config());
+  EXPECT_TRUE(constant.joints_x().empty());
+  EXPECT_EQ(constant.width_at(12.0), 0.82);
+  EXPECT_EQ(constant.height_at(-3.0), 1.30);
+}
+
+TEST(SimSectionsTest, SurfaceIdsOfTheConstantTunnelAreUnchanged) {
+  SimConfig c = SimConfig::from_preset("field");
+  const TunnelSimulator sim(c);
+  ASSERT_EQ(sim.surfaces().size(), 21u);  // 12 zones, 8 steps, manhole
+  EXPECT_EQ(sim.surfaces()[0].name, "left/edge_bottom");
+  EXPECT_EQ(sim.surfaces()[11].name, "bottom/edge_left");
+  EXPECT_EQ(sim.surfaces()[12].name, "left/step_bottom");
+  EXPECT_EQ(sim.surfaces()[20].name, "manhole");
+  EXPECT_EQ(sim.surfaces()[20].id, 21);
+  // Diaphragms come after the manhole plate, the end wall last.
+  c.diaphragm_x_m = {7.0, 9.0};
+  c.end_wall_distance_m = 6.0;
+  const TunnelSimulator more(c);
+  ASSERT_EQ(more.surfaces().size(), 24u);
+  EXPECT_EQ(more.surfaces()[20].name, "manhole");
+  EXPECT_EQ(more.surfaces()[21].name, "diaphragm/0");
+  EXPECT_EQ(more.surfaces()[21].id, 22);
+  EXPECT_EQ(more.surfaces()[22].name, "diaphragm/1");
+  EXPECT_EQ(more.surfaces()[23].name, "end");
+  EXPECT_EQ(more.diaphragms_x(), (std::vector<double>{5.0, 7.0, 9.0}));
+  // Without the new fields the simulator JSON has no new keys.
+  const nlohmann::json j = sim_config_to_json(SimConfig::from_preset("lab"));
+  EXPECT_FALSE(j.contains("sections"));
+  EXPECT_FALSE(j.contains("diaphragm_x_m"));
+  EXPECT_FALSE(j.contains("walk"));
+}
+
+TEST(SimSectionsTest, DiaphragmsBlockAllButTheirOpeningFromBothSides) {
+  SimConfig c = sectioned_config();
+  c.diaphragm_x_m = {0.8, 2.5};
+  const TunnelSimulator sim(c);
+  const SimSurface& d0 = named(sim, "diaphragm/0");
+  const SimSurface& d1 = named(sim, "diaphragm/1");
+  EXPECT_EQ(d0.wall, "diaphragm");
+  EXPECT_EQ(d0.id, 63);  // after the walls and the two joints
+  EXPECT_EQ(d1.id, 64);
+  EXPECT_NEAR(d1.offset_world, 2.5, 1e-12);
+  // Opening 0.45 x 0.70 m centred at half height: z 0.65 +- 0.35 in section 0.
+  sim::RayHit h = cast(sim, {0.3, 0.0, 1.05}, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, d0.id);
+  EXPECT_NEAR(h.t, 0.5, 1e-12);
+  EXPECT_EQ(cast(sim, {0.3, 0.0, 0.95}, Eigen::Vector3d::UnitX()).surface_id, 0);
+  EXPECT_EQ(cast(sim, {0.3, 0.2, 0.65}, Eigen::Vector3d::UnitX()).surface_id, 0);
+  EXPECT_EQ(cast(sim, {0.3, 0.23, 0.65}, Eigen::Vector3d::UnitX()).surface_id, d0.id);
+  // Seen from behind: the same plate, its normal towards the camera.
+  h = cast(sim, {2.0, 0.0, 1.05}, -Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, d0.id);
+  EXPECT_NEAR(h.t, 1.2, 1e-12);
+  EXPECT_TRUE(h.normal.isApprox(Eigen::Vector3d::UnitX()));
+  EXPECT_NEAR(h.plane_offset, -0.8, 1e-12);
+  // In section 1 (height 1.28) the opening is centred at z = 0.64: 0.98 is inside, 1.00 not.
+  EXPECT_EQ(cast(sim, {2.0, 0.0, 0.98}, Eigen::Vector3d::UnitX()).surface_id, 0);
+  h = cast(sim, {2.0, 0.0, 1.00}, Eigen::Vector3d::UnitX());
+  EXPECT_EQ(h.surface_id, d1.id);
+  EXPECT_NEAR(h.point.x(), 2.5, 1e-12);
+}
+
+TEST(SimSectionsTest, RenderedPixelsLieOnTheirSectionsPlanes) {
+  SimConfig c = sectioned_config();
+  c.poses = {{0.0, 0.5, 0.0, -5.0, 0.0}};
+  c.end_wall_distance_m = 5.0;
+  c.diaphragm_x_m = {4.2};
+  const TunnelSimulator sim(c);
+  const SimFrame f = sim.render(0);
+  std::map<int, int> count;
+  double max_err = 0.0;
+  for (int v = 0; v < f.frame.height; ++v)
+    for (int u = 0; u < f.frame.width; ++u) {
+      const SimSurface* s = sim.surface(f.surface_id[v * f.frame.width + u]);
+      if (!s || f.frame.depth_m(u, v) <= 0.0f) continue;
+      max_err = std::max(max_err, std::abs(s->distance(world_point(f, u, v))));
+      ++count[s->id];
+    }
+  EXPECT_LT(max_err, 0.0006);  // depth rounded to whole millimetres, plates seen obliquely
+  for (const char* name : {"section0/left/middle", "section1/left/middle", "section2/left/middle",
+                           "section1/top/middle", "joint/0", "diaphragm/0"})
+    EXPECT_GT(count[named(sim, name).id], 100) << name;
+}
+
+TEST(SimWalkTest, WalkPlacesOnePoseGroupPerStation) {
+  SimConfig c = sectioned_config();
+  c.frames = 10;
+  c.walk = SimWalk{0.2, 3.0, 5, {0.1, 0.9, 0.0, -4.0, 2.0}};
+  const TunnelSimulator sim(c);
+  EXPECT_EQ(sim.group_count(), 5);
+  const double xs[5] = {0.2, 0.9, 1.6, 2.3, 3.0};
+  for (int i = 0; i < 10; ++i) {
+    const int g = i / 2;
+    EXPECT_EQ(sim.pose_group(i), g);
+    EXPECT_NEAR(sim.group_x(g), xs[g], 1e-12);
+    const Eigen::Vector3d p = sim.pose(i).translation();
+    EXPECT_NEAR(p.x(), xs[g], 1e-12);
+    // Relative to the station's own cross-section.
+    EXPECT_NEAR(p.y(), 0.1 * sim.width_at(xs[g]), 1e-12);
+    EXPECT_NEAR(p.z(), 0.9 * sim.height_at(xs[g]), 1e-12);
+  }
+  EXPECT_NEAR(sim.pose(0).translation().z(), 1.17, 1e-12);
+  EXPECT_NEAR(sim.pose(5).translation().z(), 0.9 * 1.28, 1e-12);
+  EXPECT_NEAR(sim.pose(9).translation().z(), 0.9 * 1.32, 1e-12);
+  EXPECT_TRUE(sim.pose(3).linear().isApprox(TunnelSimulator::camera_rotation(0.0, -4.0, 2.0)));
+  EXPECT_EQ(sim.group_x(4), 3.0);  // the last stop exactly at the end
+  // With a manhole plate: each station's distance to it, only in front of it.
+  c.distance_to_manhole_m = 2.0;
+  const TunnelSimulator with_plate(c);
+  EXPECT_NEAR(*with_plate.distance_to_manhole(0), 1.8, 1e-12);
+  EXPECT_NEAR(*with_plate.distance_to_manhole(3), 1.1, 1e-12);
+  EXPECT_FALSE(with_plate.distance_to_manhole(9));
+  // One stop: every frame at the start.
+  c.walk->stops = 1;
+  EXPECT_NEAR(TunnelSimulator(c).pose(9).translation().x(), 0.2, 1e-12);
+}
+
+TEST(SimWalkTest, ApproachLosesTheFloorInFrontOfThePlate) {
+  // Camera just under the roof, level; the walk ends 1.8 m in front of a diaphragm at 5 m.
+  SimConfig c = exact(straight_config());
+  c.frames = 2;
+  c.diaphragm_x_m = {5.0};
+  c.end_wall_distance_m.reset();
+  c.walk = SimWalk{0.2, 3.2, 2, {0.0, 0.9, 0.0, 0.0, 0.0}};
+  const TunnelSimulator sim(c);
+  const int plate = named(sim, "diaphragm/0").id;
+  int floor_in_front[2] = {0, 0}, plate_pixels[2] = {0, 0};
+  for (int i = 0; i < 2; ++i) {
+    const SimFrame f = sim.render(i);
+    for (int v = 0; v < f.frame.height; ++v)
+      for (int u = 0; u < f.frame.width; ++u) {
+        const int id = f.surface_id[v * f.frame.width + u];
+        if (id == plate) {
+          ++plate_pixels[i];
+          if (i == 1 && u % 9 == 0 && v % 9 == 0) {
+            EXPECT_NEAR(f.frame.depth_m(u, v), 1.8, 0.0006);
+          }
+        }
+        const SimSurface* s = sim.surface(id);
+        if (!s || s->wall != "bottom" || f.frame.depth_m(u, v) <= 0.0f) continue;
+        if (world_point(f, u, v).x() < 5.0) ++floor_in_front[i];
+      }
+  }
+  EXPECT_GT(floor_in_front[0], 5000);  // 4.8 m away the floor shows from x = 3.0 to the plate
+  EXPECT_EQ(floor_in_front[1], 0);     // 1.8 m away it would only show from x = 6.0
+  EXPECT_GT(plate_pixels[1], plate_pixels[0]);
+}
+
+TEST(SimWalkTest, ArmFollowsTheWalk) {
+  SimConfig c = SimConfig::from_preset("lab");
+  c.frames = 2;
+  c.arm_preset = "inchworm7";
+  c.walk = SimWalk{0.0, 2.0, 2, {0.0, 0.75, 0.0, -6.0, 0.0}};
+  const TunnelSimulator sim(c);
+  for (int i : {0, 1}) {
+    const SimArmState s = *sim.arm_state(i);
+    EXPECT_NEAR(s.base.translation().x(), 2.0 * i - c.arm_setback_m, 1e-12);
+    EXPECT_LT(s.ik_error_m, 1e-4);
+    EXPECT_NEAR(sim.pose(i).translation().x(), 2.0 * i, 0.01);
+  }
+}
+
+TEST(SimWalkTest, LayoutValidationAndJsonRoundTrip) {
+  SimConfig c = sectioned_config();
+  c.frames = 6;
+  c.diaphragm_x_m = {2.2};
+  c.walk = SimWalk{0.0, 2.0, 3, {0.05, 0.6, 1.0, -2.0, 3.0}};
+  c.sections_start_x_m = 0.25;
+  const nlohmann::json j = sim_config_to_json(c);
+  ASSERT_TRUE(j.contains("sections"));
+  EXPECT_EQ(j.at("sections").size(), 3u);
+  const SimConfig back = sim_config_from_json(j, "test");
+  EXPECT_EQ(sim_config_to_json(back), j);
+  EXPECT_EQ(back.sections[1].width_m, 0.80);
+  EXPECT_EQ(back.sections_start_x_m, 0.25);
+  EXPECT_EQ(back.walk->stops, 3);
+  EXPECT_EQ(back.walk->pose.yaw_deg, 3.0);
+  EXPECT_EQ(back.diaphragm_x_m, std::vector<double>{2.2});
+  nlohmann::json bad = j;
+  bad["sections"][0]["length_m"] = 0.0;
+  EXPECT_THROW(sim_config_from_json(bad, "x.json"), InputError);
+  bad = j;
+  bad["walk"] = 3;
+  EXPECT_THROW(sim_config_from_json(bad, "x.json"), InputError);
+
+  auto fails = [](SimConfig x, const std::string& needle) {
+    try {
+      x.validate();
+    } catch (const ParameterError& e) {
+      return std::string(e.what()).find(needle) != std::string::npos;
+    }
+    return false;
+  };
+  SimConfig x = c;
+  x.sections[1].length_m = 0.0;
+  EXPECT_TRUE(fails(x, "sections[1].length_m"));
+  x = c;
+  x.sections[2].width_m = 6.0;
+  EXPECT_TRUE(fails(x, "sections[2].width_m"));
+  x = c;
+  x.walk->stops = 0;
+  EXPECT_TRUE(fails(x, "walk stops"));
+  x = c;
+  x.frames = 2;
+  EXPECT_TRUE(fails(x, "fewer than the walk's 3 stops"));
+  x = c;
+  x.sections[1].width_m = 0.45;  // the manhole opening (0.45 m) must fit every section
+  EXPECT_TRUE(fails(x, "manhole_width_m"));
+  x = c;
+  x.walk->pose.z_rel = 0.99;  // into the roof plate of the lowest section
+  EXPECT_TRUE(fails(x, "walk pose z_rel"));
+  x = c;
+  x.diaphragm_x_m = {std::nan("")};
+  EXPECT_TRUE(fails(x, "diaphragm_x_m"));
+  x = c;
+  x.poses.clear();  // a walk does not need the pose groups
+  EXPECT_NO_THROW(x.validate());
+}
+
+TEST(SimWalkTest, GroundTruthListsSectionsAndDiaphragms) {
+  const fs::path dir = fresh_dir("sections");
+  SimConfig c = sectioned_config();
+  c.frames = 2;
+  c.diaphragm_x_m = {2.0};
+  c.distance_to_manhole_m = 4.0;  // manhole plate at x = 4
+  c.walk = SimWalk{0.5, 2.5, 2, {0.0, 0.5, 0.0, 0.0, 0.0}};
+  write_sim_dataset(dir.string(), c);
+  std::ifstream in(dir / "dataset.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& gt = j.at("ground_truth");
+  EXPECT_EQ(gt.at("width_m").get<double>(), 0.84);  // the section at the first camera
+  EXPECT_EQ(gt.at("height_m").get<double>(), 1.30);
+  EXPECT_EQ(gt.at("manhole_x_m").get<double>(), 4.0);
+  EXPECT_EQ(gt.at("diaphragms_x_m"), nlohmann::json::array({2.0, 4.0}));
+  // Cameras at 0.5 and 2.5: the extent is 0.5 - 6 .. 2.5 + 6 m.
+  const nlohmann::json& sec = gt.at("sections");
+  ASSERT_EQ(sec.size(), 3u);
+  const double expect[3][4] = {
+      {-5.5, 1.5, 0.84, 1.30}, {1.5, 3.0, 0.80, 1.28}, {3.0, 8.5, 0.82, 1.32}};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(sec[k].at("from_x_m").get<double>(), expect[k][0], 1e-12) << k;
+    EXPECT_NEAR(sec[k].at("to_x_m").get<double>(), expect[k][1], 1e-12) << k;
+    EXPECT_EQ(sec[k].at("width_m").get<double>(), expect[k][2]) << k;
+    EXPECT_EQ(sec[k].at("height_m").get<double>(), expect[k][3]) << k;
+  }
+  std::map<std::string, nlohmann::json> by_name;
+  for (const nlohmann::json& s : gt.at("surfaces")) by_name[s.at("name")] = s;
+  EXPECT_EQ(by_name.at("section1/left/middle").at("section"), 1);
+  EXPECT_EQ(by_name.at("section1/left/middle").at("id"), 22);
+  EXPECT_EQ(by_name.at("joint/0").at("wall"), "joint");
+  EXPECT_EQ(by_name.at("joint/0").at("id"), 61);
+  EXPECT_EQ(by_name.at("manhole").at("id"), 63);
+  EXPECT_EQ(by_name.at("diaphragm/0").at("id"), 64);
+  EXPECT_NEAR(by_name.at("diaphragm/0").at("offset_m").get<double>(), 2.0, 1e-12);
+  // Frames: one pose group per station, the plate's distance from each.
+  ASSERT_EQ(j.at("frames").size(), 2u);
+  EXPECT_EQ(j.at("frames")[1].at("pose_group"), 1);
+  EXPECT_NEAR(j.at("frames")[0].at("distance_to_manhole_m").get<double>(), 3.5, 1e-12);
+  EXPECT_NEAR(j.at("frames")[1].at("pose")[3].get<double>(), 2.5, 1e-12);
+  // The simulator section regenerates the same layout.
+  const SimConfig back = sim_config_from_json(j.at("simulator"), "dataset.json");
+  EXPECT_EQ(back.sections.size(), 3u);
+  EXPECT_EQ(back.walk->end_x_m, 2.5);
+  fs::remove_all(dir);
+}
+
+TEST(SimWalkTest, SpecParsersReadTheFlagFormats) {
+  const std::vector<SimSection> s = parse_sim_sections("--sections", "1.5:0.84x1.30, 2:0.80X1.28");
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].length_m, 1.5);
+  EXPECT_EQ(s[0].width_m, 0.84);
+  EXPECT_EQ(s[1].height_m, 1.28);
+  EXPECT_EQ(parse_sim_numbers("--diaphragms", "2,-1.5,3e1"),
+            (std::vector<double>{2.0, -1.5, 30.0}));
+  const SimWalk w = parse_sim_walk("--walk", "0,4.5,7");
+  EXPECT_EQ(w.end_x_m, 4.5);
+  EXPECT_EQ(w.stops, 7);
+  for (const char* bad :
+       {"", "1.5", "1.5:0.84", "1.5:0.84x", "a:0.84x1.3", "1.5:0.84x1.3,", "-1:0.8x1.2"})
+    EXPECT_THROW(parse_sim_sections("--sections", bad), ParameterError) << bad;
+  EXPECT_THROW(parse_sim_numbers("--diaphragms", "1,,2"), ParameterError);
+  EXPECT_THROW(parse_sim_numbers("--diaphragms", "1,inf"), ParameterError);
+  EXPECT_THROW(parse_sim_walk("--walk", "0,1"), ParameterError);
+  EXPECT_THROW(parse_sim_walk("--walk", "0,1,2.5"), ParameterError);
+  EXPECT_THROW(parse_sim_walk("--walk", "0,1,0"), ParameterError);
+}
+
+// Runs the CLI; returns its exit status and its stderr.
+int run_cli_err(const std::string& args, std::string& err) {
+  const fs::path err_file = fresh_dir("stderr");
+  const int status = std::system((std::string(TUNNELMAP_CLI_PATH) + " " + args + " >/dev/null 2>" +
+                                  err_file.string()).c_str());
+  std::ifstream in(err_file);
+  err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  fs::remove(err_file);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(SimWalkTest, CliSectionsDiaphragmsAndWalk) {
+  const fs::path dir = fresh_dir("cli_walk");
+  EXPECT_EQ(run_cli("simulate " + dir.string() +
+                    " --frames 2 --sections 1.5:0.84x1.30,1.5:0.80x1.28,2:0.82x1.32"
+                    " --sections-start 0.5"
+                    " --diaphragms 4.5 --walk 0.2,1,2 --walk-pose 0.05,0.9,-2 --seed 3 --quiet"),
+            0);
+  std::ifstream in(dir / "dataset.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json& sim = j.at("simulator");
+  EXPECT_EQ(sim.at("sections").size(), 3u);
+  EXPECT_EQ(sim.at("sections")[1].at("width_m").get<double>(), 0.80);
+  EXPECT_EQ(sim.at("sections_start_x_m").get<double>(), 0.5);
+  EXPECT_EQ(sim.at("diaphragm_x_m"), nlohmann::json::array({4.5}));
+  EXPECT_EQ(sim.at("walk").at("stops"), 2);
+  EXPECT_EQ(sim.at("walk").at("pose").at("z_rel").get<double>(), 0.9);
+  EXPECT_EQ(sim.at("walk").at("pose").at("pitch_deg").get<double>(), -2.0);
+  EXPECT_EQ(j.at("ground_truth").at("diaphragms_x_m"), nlohmann::json::array({4.5}));
+  EXPECT_EQ(j.at("ground_truth").at("sections").size(), 3u);
+  EXPECT_TRUE(fs::is_regular_file(dir / "depth/000001.png"));
+  fs::remove_all(dir);
+
+  // Malformed values: exit 2, one line naming the flag, nothing written.
+  const std::pair<const char*, const char*> bad[] = {
+      {"--sections 1.5:0.84", "--sections"},
+      {"--sections 1.5:0.84xwide", "--sections"},
+      {"--sections 0:0.84x1.3", "--sections"},
+      {"--sections 1:9x1.3", "--sections"},
+      {"--sections 1:0.84x1.3 --width 0.9", "--sections"},
+      {"--sections-start 1", "--sections-start"},
+      {"--diaphragms 2,x", "--diaphragms"},
+      {"--walk 0,1", "--walk"},
+      {"--walk 0,1,2.5", "--walk"},
+      {"--walk 0,1,50 --frames 3", "--walk"},
+      {"--walk-pose 0,0.5,0", "--walk-pose"},
+      {"--walk 0,1,2 --walk-pose 0,2,0", "--walk-pose"},
+      {"--walk 0,1,2 --walk-pose 0,0.5", "--walk-pose"},
+  };
+  for (const auto& [args, flag] : bad) {
+    std::string err;
+    EXPECT_EQ(run_cli_err("simulate " + dir.string() + " " + args, err), 2) << args;
+    EXPECT_NE(err.find(flag), std::string::npos) << args << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
+  }
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 }  // namespace

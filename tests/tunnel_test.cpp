@@ -267,13 +267,13 @@ TEST(TunnelDetector, DefaultClusterGapMergesAn8mmStepButSeparatesA15mmStep) {
 
 TEST(TunnelDetector, TooFewPlanes) {
   Scene s = SceneBuilder(SceneSpec()).build();
-  s.planes.planes.resize(3);
+  s.planes.planes.resize(1);
   const TunnelMap m = detect(s);
   EXPECT_FALSE(m.detected);
   EXPECT_EQ(m.status, "too_few_planes");
-  EXPECT_NE(m.reason.find("3 planes"), std::string::npos) << m.reason;
-  EXPECT_EQ(m.plane_classes.size(), 3u);
-  EXPECT_EQ(m.plane_outlier.size(), 3u);
+  EXPECT_NE(m.reason.find("1 planes"), std::string::npos) << m.reason;
+  EXPECT_EQ(m.plane_classes.size(), 1u);
+  EXPECT_EQ(m.plane_outlier.size(), 1u);
 }
 
 TEST(TunnelDetector, OneFlatWallIsNotATunnel) {
@@ -290,13 +290,48 @@ TEST(TunnelDetector, OneFlatWallIsNotATunnel) {
   EXPECT_EQ(m.reason.find("left"), std::string::npos) << m.reason;
 }
 
-TEST(TunnelDetector, MissingTop) {
+TEST(TunnelDetector, MissingTopGivesAPartialMapWithTheWidthMeasured) {
   SceneSpec spec;
   spec.with[static_cast<int>(WallClass::Top)] = false;
   const TunnelMap m = detect(SceneBuilder(spec).build());
+  ASSERT_TRUE(m.detected) << m.reason;
+  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.reason, "height unknown");
+  EXPECT_EQ(m.width_source, DimensionSource::Measured);
+  EXPECT_EQ(m.height_source, DimensionSource::Unseen);
+  EXPECT_NEAR(m.width_m, kW, 0.001);
+  EXPECT_FALSE(m.wall(WallClass::Top).found);  // never invented
+  EXPECT_TRUE(m.wall(WallClass::Top).zones.empty());
+  for (WallClass c : {WallClass::Left, WallClass::Right, WallClass::Bottom})
+    EXPECT_EQ(m.wall(c).source, DimensionSource::Measured);
+}
+
+TEST(TunnelDetector, MissingTopWithADesignInfersTheRoofFromTheFloor) {
+  SceneSpec spec;
+  spec.with[static_cast<int>(WallClass::Top)] = false;
+  TunnelOptions o;
+  o.design_height_m = 1.25;
+  const TunnelMap m = detect(SceneBuilder(spec).build(), o);
+  ASSERT_TRUE(m.detected) << m.reason;
+  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.reason, "height from design");
+  EXPECT_EQ(m.height_source, DimensionSource::Design);
+  EXPECT_DOUBLE_EQ(m.height_m, 1.25);
+  const Wall& top = m.wall(WallClass::Top);
+  EXPECT_TRUE(top.found);
+  EXPECT_EQ(top.source, DimensionSource::Design);
+  EXPECT_NEAR(top.offset_m + m.wall(WallClass::Bottom).offset_m, 1.25, 1e-9);
+  EXPECT_FALSE(top.zones.empty());
+}
+
+TEST(TunnelDetector, TwoAdjacentWallsMeasureNothingWithoutADesign) {
+  SceneSpec spec;
+  spec.with[static_cast<int>(WallClass::Top)] = false;
+  spec.with[static_cast<int>(WallClass::Right)] = false;
+  const TunnelMap m = detect(SceneBuilder(spec).build());
   EXPECT_FALSE(m.detected);
   EXPECT_EQ(m.status, "missing_wall");
-  EXPECT_EQ(m.reason, "top wall: 0 planes");
+  EXPECT_NE(m.reason.find("neither the width nor the height"), std::string::npos) << m.reason;
 }
 
 TEST(TunnelDetector, OutOfTemplateWhenThePriorIsNarrowed) {
@@ -318,6 +353,7 @@ TEST(TunnelDetector, ContextOfEarlierScans) {
   const Scene s = SceneBuilder(SceneSpec()).build();
   TunnelMap prior;
   prior.detected = true;
+  prior.width_source = prior.height_source = DimensionSource::Measured;
   prior.height_m = kH;
   TunnelContext far;
   prior.width_m = 0.90;  // 80 mm wider than this scan: beyond the 40 mm tolerance
@@ -344,6 +380,7 @@ TEST(TunnelContext, KeepsOnlyTheLastWindowOfScans) {
   TunnelContext c;
   TunnelMap m;
   m.detected = true;
+  m.width_source = m.height_source = DimensionSource::Measured;
   m.height_m = 1.2;
   m.width_m = 0.80;
   for (std::size_t i = 0; i < TunnelContext::kWindow; ++i) c.accept(m);
@@ -361,6 +398,7 @@ TEST(TunnelContext, MediansOfDetectedMapsOnly) {
   EXPECT_TRUE(c.empty());
   TunnelMap m;
   m.detected = true;
+  m.width_source = m.height_source = DimensionSource::Measured;
   for (double w : {0.80, 0.90, 0.82}) {
     m.width_m = w;
     m.height_m = 2 * w;
@@ -375,6 +413,13 @@ TEST(TunnelContext, MediansOfDetectedMapsOnly) {
   m.width_m = 5.0;
   c.accept(m);
   EXPECT_DOUBLE_EQ(c.width_m(), 0.83);
+  m.detected = true;  // a partial map adds only what it measured
+  m.height_source = DimensionSource::Context;
+  m.width_m = 0.83;
+  m.height_m = 9.0;
+  c.accept(m);
+  EXPECT_DOUBLE_EQ(c.width_m(), 0.83);
+  EXPECT_DOUBLE_EQ(c.height_m(), 1.64);  // the inferred 9 m is not a measurement
   c.clear();
   EXPECT_TRUE(c.empty());
 }
@@ -558,7 +603,7 @@ TEST(TunnelDetector, DetectingTwiceIntoOneMapGivesBitIdenticalWalls) {
 }
 
 TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
-  // A: the default scan. B: a failure with another wall count and reason. C: another detected
+  // A: the default scan. B: a partial map with another wall count and reason. C: another detected
   // scan (other pose, 15 mm plates: more clusters, other extent). D: too few planes.
   const Scene a = SceneBuilder(SceneSpec()).build();
   SceneSpec spec_b;
@@ -570,7 +615,7 @@ TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
   spec_c.outliers = false;
   const Scene c = SceneBuilder(spec_c).build();
   Scene d = a;
-  d.planes.planes.resize(3);
+  d.planes.planes.resize(1);
 
   TunnelMap map;
   detect_tunnel(a.planes, a.up_cam, fine_options(), nullptr, map);
@@ -585,7 +630,7 @@ TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
     expect_same_map(map, first);
   }
   EXPECT_EQ(first.status, "ok");
-  EXPECT_EQ(detect(b).status, "missing_wall");
+  EXPECT_EQ(detect(b).status, "partial");
   EXPECT_TRUE(detect(c).detected);
   EXPECT_EQ(detect(d).status, "too_few_planes");
 }

@@ -24,7 +24,8 @@ struct FrameRecord {
     FrameRecord f;
     f.index = index;
     f.method = method;
-    f.detected = r.map.detected;
+    // A partial map with a dimension unknown has no width/height to tabulate or average.
+    f.detected = r.map.has_width() && r.map.has_height();
     f.status = r.map.status;
     f.width_m = r.map.width_m;
     f.height_m = r.map.height_m;

@@ -45,6 +45,16 @@
 namespace tunnelmap::ui {
 
 namespace {
+
+// "width 0.820 m, height 1.300 m", "partial: width 0.820 m, height unknown", or the status.
+QString map_summary(const tunnelmap::TunnelMap& m) {
+  if (!m.detected) return QString::fromStdString(m.status);
+  const auto dim = [](bool known, double v) {
+    return known ? QObject::tr("%1 m").arg(v, 0, 'f', 3) : QObject::tr("unknown");
+  };
+  const QString dims = QObject::tr("width %1, height %2").arg(dim(m.has_width(), m.width_m), dim(m.has_height(), m.height_m));
+  return m.status == "partial" ? QObject::tr("partial (%1): %2").arg(QString::fromStdString(m.reason), dims) : dims;
+}
 constexpr int kMaxRecent = 8;
 constexpr int kDebounceMs = 60;  // while a slider is dragged; a release runs at once
 }  // namespace
@@ -369,8 +379,7 @@ void MainWindow::on_live_frame(const RunOutcome& outcome) {
   QString text = tr("Live %1 — %2 — %3 — %4 fps, latency %5 ms, %6 received, %7 dropped")
                      .arg(live_->uri())
                      .arg(QString::fromUtf8(method_display_name(outcome.method)))
-                     .arg(m.detected ? tr("width %1 m, height %2 m").arg(m.width_m, 0, 'f', 3).arg(m.height_m, 0, 'f', 3)
-                                     : QString::fromStdString(m.status))
+                     .arg(map_summary(m))
                      .arg(st.fps, 0, 'f', 1)
                      .arg(st.latency_ms, 0, 'f', 0)
                      .arg(st.received)
@@ -492,8 +501,7 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
       tr("Frame %1/%2 — %8 — %3, %4 planes — pipeline %5 ms (from %6), update %7 ms")
           .arg(outcome.frame_index + 1)
           .arg(source_ ? source_->size() : 0)
-          .arg(r.map.detected ? tr("width %1 m, height %2 m").arg(r.map.width_m, 0, 'f', 3).arg(r.map.height_m, 0, 'f', 3)
-                              : QString::fromStdString(r.map.status))
+          .arg(map_summary(r.map))
           .arg(r.planes.planes.size())
           .arg(total == r.timings_ms.end() ? 0.0 : total->second, 0, 'f', 1)
           .arg(stage_name(outcome.from))
@@ -782,8 +790,7 @@ void MainWindow::fuse_sequence() {
               .arg(fused->frusta)
               .arg(rescan)
               .arg(fused->triangles)
-              .arg(m.detected ? tr("width %1 m, height %2 m").arg(m.width_m, 0, 'f', 3).arg(m.height_m, 0, 'f', 3)
-                              : QString::fromStdString(m.status))
+              .arg(map_summary(m))
               .arg(fused->fuse_ms, 0, 'f', 0)
               .arg(fused->mesh_ms, 0, 'f', 0));
       emit fusionFinished(true);

@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <tuple>
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
 #include "core/baselines/method_runner.h"
 #include "core/export/map_ply.h"
 #include "core/io/frame_source.h"
+#include "core/mapping/station_map_builder.h"
 #include "core/pipeline/sequence_runner.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
@@ -32,7 +34,23 @@ struct DetectOptions {
 
 void print_frame_line(std::size_t index, const std::string& what, const FrameResult& r) {
   const TunnelMap& m = r.map;
-  if (m.detected)
+  if (m.status == "partial") {
+    // "partial: height from context", then the values that are known.
+    std::string dims;
+    for (const auto& [name, src, value] :
+         {std::tuple{"width", m.width_source, m.width_m}, std::tuple{"height", m.height_source, m.height_m}}) {
+      char buf[64];
+      if (src == DimensionSource::Unseen)
+        std::snprintf(buf, sizeof buf, " %s unknown", name);
+      else
+        std::snprintf(buf, sizeof buf, " %s %.4f m%s%s", name, value,
+                      src == DimensionSource::Measured ? "" : " from ",
+                      src == DimensionSource::Measured ? "" : dimension_source_name(src));
+      dims += buf;
+    }
+    std::printf("[%zu] %s: partial: %s; tunnel%s, %zu planes, %.1f ms\n", index, what.c_str(), m.reason.c_str(),
+                dims.c_str(), r.planes.planes.size(), r.timings_ms.at("total"));
+  } else if (m.detected)
     std::printf("[%zu] %s: tunnel width %.4f m height %.4f m, %zu planes, %.1f ms\n", index, what.c_str(),
                 m.width_m, m.height_m, r.planes.planes.size(), r.timings_ms.at("total"));
   else
@@ -71,6 +89,7 @@ int run_detect(const DetectOptions& o) {
   runner.set_camera_up(o.in.camera_up());
   if (const Dataset* ds = source->dataset()) runner.set_world_up(ds->up);
   TunnelContext context;
+  StationMapBuilder stations(station_map_options(pipeline.params()), tunnel_options(pipeline.params()));
   // Frames are detected in parallel without the context (each worker with its own copy of the
   // runner); the context of earlier frames is applied in frame order, so the output equals a
   // serial run. Qhull checks the context inside its fit: it runs in order (loading still ahead).
@@ -80,7 +99,13 @@ int run_detect(const DetectOptions& o) {
     in_order = [&runner, &context](SequenceFrame& f) { runner.run(f.frame, f.result, &context); };
   } else {
     work = [runner](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
-    in_order = [&context, opt = tunnel_options(pipeline.params())](SequenceFrame& f) {
+    // Posed frames: the context is the station map along the tunnel (world frame), which
+    // follows sections that change; frames without a pose keep the context of recent widths.
+    in_order = [&context, &stations, opt = tunnel_options(pipeline.params())](SequenceFrame& f) {
+      if (f.frame.pose) {
+        stations.add_frame(static_cast<int>(f.index), f.result, *f.frame.pose);
+        return;
+      }
       apply_tunnel_context(f.result.map, opt, context);
       if (f.result.map.detected) context.accept(f.result.map);
     };

@@ -12,6 +12,7 @@
 #include "core/fusion/mesh_accuracy.h"
 #include "core/io/dataset.h"
 #include "core/kinematics/robot_json.h"
+#include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #include "mesh/tsdf_mesher.h"
@@ -52,7 +53,11 @@ void run(const FuseOptions& o, CliContext& ctx) {
     if (!r.merged.map.detected)
       throw InputError(o.in.input, "no frame found the tunnel, so there is no map to write (" +
                                        r.merged.map.reason + ")");
-    write_map_ply(o.map_path, r.merged.map, pj);  // already in the world frame
+    // The map follows the sections (the same map as `map --ply`), in the world frame.
+    if (!r.stations.section_maps.empty())
+      write_sectioned_map_ply(o.map_path, r.stations.section_maps, pj);
+    else
+      write_map_ply(o.map_path, r.merged.map, pj);
   }
 
   // Simulated datasets carry their true surfaces: report the mesh's accuracy against them.
@@ -70,6 +75,11 @@ void run(const FuseOptions& o, CliContext& ctx) {
                   m.height_m, m.extent_max_m - m.extent_min_m, r.merged.frames_merged);
     else
       std::cout << "map: " << m.status << " (" << m.reason << ")\n";
+    for (std::size_t i = 0; i < r.stations.sections.size(); ++i) {
+      const Section& sec = r.stations.sections[i];
+      std::printf("section %zu: %.2f to %.2f m, width %.4f m, height %.4f m\n", i + 1, sec.from_m,
+                  sec.to_m, sec.width_m, sec.height_m);
+    }
     for (const PoseGroupStatus& p : r.merged.poses)
       std::cout << "pose " << p.group << " (frames " << p.frames.front() << "-" << p.frames.back()
                 << "): " << p.message << "\n";
@@ -99,6 +109,8 @@ void run(const FuseOptions& o, CliContext& ctx) {
                        {"status", p.status},
                        {"message", p.message},
                        {"camera_to_world", isometry_to_json(p.camera_to_world)}});
+    nlohmann::json sections = nlohmann::json::array();  // as in `map --json`
+    for (const Section& sec : r.stations.sections) sections.push_back(section_json(sec, r.stations.options));
     nlohmann::json doc = {
         {"tool", std::string("tunnelmap ") + TUNNELMAP_VERSION},
         {"input", o.in.input},
@@ -126,6 +138,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
           {"width_spread_m", r.merged.width_spread_m},
           {"height_spread_m", r.merged.height_spread_m}}},
         {"poses", poses},
+        {"sections", sections},
         {"ground_truth_accuracy",
          truth.empty() ? nlohmann::json(nullptr)
                        : nlohmann::json{{"fraction_within_10mm", acc.fraction_within},

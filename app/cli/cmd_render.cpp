@@ -5,24 +5,14 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
+#include <string>
 #include <iostream>
 #include <vector>
 
 #include "app/cli/commands.h"
+#include "app/cli/renderer_path.h"
 
 namespace tunnelmap::cli {
-
-namespace {
-std::filesystem::path find_renderer() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path dir = ec ? std::filesystem::path(".") : self.parent_path();
-  for (const auto& candidate : {dir / "tunnelmap-render", dir / "render" / "tunnelmap-render"})
-    if (std::filesystem::exists(candidate)) return candidate;
-  return dir / "tunnelmap-render";
-}
-}  // namespace
 
 int run_render_verb(int argc, char** argv) {
   const std::string renderer = find_renderer().string();

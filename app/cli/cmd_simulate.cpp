@@ -6,6 +6,7 @@
 #include "app/cli/commands.h"
 #include "core/sim/sim_config.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/sim/sim_spec_parse.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -22,6 +23,8 @@ struct SimulateOptions {
   std::string rgb_format = "png";
   std::string arm;                 // robot preset: joints instead of poses
   std::optional<double> sag;       // arm link sag, deg per metre of reach
+  std::optional<std::string> sections, diaphragms, walk, walk_pose;  // lists, parsed in run()
+  std::optional<double> sections_start;
   bool quiet = false;
 };
 
@@ -31,6 +34,65 @@ void check(const char* flag, const std::optional<double>& v, double lo, double h
     std::ostringstream s;
     s << "simulate: " << flag << " " << *v << " is out of range [" << lo << ", " << hi << "]";
     throw ParameterError(s.str());
+  }
+}
+
+// The same for one value inside a list flag (--sections, --walk, ...).
+void check(const char* flag, const char* what, double v, double lo, double hi) {
+  if (!(v >= lo && v <= hi)) {
+    std::ostringstream s;
+    s << "simulate: " << flag << ": " << what << " " << v << " is out of range [" << lo << ", "
+      << hi << "]";
+    throw ParameterError(s.str());
+  }
+}
+
+[[noreturn]] void refuse(const std::string& problem) {
+  throw ParameterError("simulate: " + problem);
+}
+
+// --sections, --sections-start, --diaphragms, --walk, --walk-pose.
+void apply_layout(const SimulateOptions& o, SimConfig& c) {
+  if (o.sections) {
+    if (o.width || o.height)
+      refuse("--width/--height do not apply with --sections (each section has its own size)");
+    c.sections = parse_sim_sections("--sections", *o.sections);
+    for (std::size_t k = 0; k < c.sections.size(); ++k) {
+      const std::string n = "section " + std::to_string(k + 1);
+      check("--sections", (n + " width").c_str(), c.sections[k].width_m, 0.3, 5.0);
+      check("--sections", (n + " height").c_str(), c.sections[k].height_m, 0.3, 5.0);
+      check("--sections", (n + " length").c_str(), c.sections[k].length_m, 1e-9, 1000.0);
+    }
+  }
+  if (o.sections_start) {
+    if (!o.sections) refuse("--sections-start needs --sections");
+    check("--sections-start", o.sections_start, -1000.0, 1000.0);
+    c.sections_start_x_m = *o.sections_start;
+  }
+  if (o.diaphragms) {
+    c.diaphragm_x_m = parse_sim_numbers("--diaphragms", *o.diaphragms);
+    for (double x : c.diaphragm_x_m) check("--diaphragms", "position", x, -1000.0, 1000.0);
+  }
+  if (o.walk_pose && !o.walk) refuse("--walk-pose needs --walk");
+  if (o.walk) {
+    SimWalk w = parse_sim_walk("--walk", *o.walk);
+    check("--walk", "FROM", w.start_x_m, -1000.0, 1000.0);
+    check("--walk", "TO", w.end_x_m, -1000.0, 1000.0);
+    if (w.stops > c.frames)
+      refuse("--walk: " + std::to_string(w.stops) +
+             " stops need at least as many frames (--frames is " + std::to_string(c.frames) + ")");
+    w.pose = SimCameraPose{0.0, 0.5, 0.0, 0.0, 0.0};
+    if (o.walk_pose) {
+      const std::vector<double> p =
+          parse_sim_numbers("--walk-pose", *o.walk_pose, 3, "Y_REL,Z_REL,PITCH_DEG");
+      check("--walk-pose", "Y_REL", p[0], -0.5, 0.5);
+      check("--walk-pose", "Z_REL", p[1], 0.0, 1.0);
+      check("--walk-pose", "PITCH_DEG", p[2], -60.0, 60.0);
+      w.pose.y_rel = p[0];
+      w.pose.z_rel = p[1];
+      w.pose.pitch_deg = p[2];
+    }
+    c.walk = w;
   }
 }
 
@@ -60,13 +122,16 @@ void run(const SimulateOptions& o, CliContext& ctx) {
   if (!o.arm.empty()) c.arm_preset = o.arm;
   check("--sag", o.sag, 0.0, 10.0);
   if (o.sag) c.arm_sag_deg_per_m = *o.sag;
+  apply_layout(o, c);
   c.validate();  // combinations (e.g. manhole opening vs. a small width)
 
   write_sim_dataset(o.out_dir, c, [&](int i, int n, const std::string& depth_path) {
     if (!o.quiet) std::cout << "frame " << (i + 1) << "/" << n << ": " << depth_path << "\n";
   });
-  std::cout << "wrote " << c.frames << " simulated " << c.preset << " frames (" << c.width_m
-            << " x " << c.height_m << " m, seed " << c.seed << ") to " << o.out_dir << "\n";
+  std::cout << "wrote " << c.frames << " simulated " << c.preset << " frames (";
+  if (c.sections.empty()) std::cout << c.width_m << " x " << c.height_m << " m";
+  else std::cout << c.sections.size() << (c.sections.size() == 1 ? " section" : " sections");
+  std::cout << ", seed " << c.seed << ") to " << o.out_dir << "\n";
   ctx.exit_code = 0;
 }
 
@@ -98,6 +163,16 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Eye-in-hand arm preset (inchworm7): frames get joints, not poses")
       ->check(CLI::IsMember({"inchworm7"}));
   sub->add_option("--sag", opt->sag, "Arm link sag in degrees per metre of reach (with --arm)");
+  sub->add_option("--sections", opt->sections,
+                  "Sections of changing size along the tunnel: L:WxH,L:WxH,... (metres)");
+  sub->add_option("--sections-start", opt->sections_start,
+                  "World X where the first section begins (metres, default 0)");
+  sub->add_option("--diaphragms", opt->diaphragms,
+                  "Manhole diaphragms at these world X positions: X1,X2,... (metres)");
+  sub->add_option("--walk", opt->walk,
+                  "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
+  sub->add_option("--walk-pose", opt->walk_pose,
+                  "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
   sub->add_flag("--quiet", opt->quiet, "Print only the summary line");
   sub->callback([opt, &ctx] { run(*opt, ctx); });
 }

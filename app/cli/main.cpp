@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   cli::add_params_command(app, ctx);
   cli::add_simulate_command(app, ctx);
   cli::add_fuse_command(app, ctx);
+  cli::add_map_command(app, ctx);
   cli::add_evaluate_command(app, ctx);
   cli::add_devices_command(app, ctx);
   cli::add_record_command(app, ctx);

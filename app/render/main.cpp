@@ -1,10 +1,13 @@
-// tunnelmap-render: renders the GUI's 3D scene of one processed frame to a PNG through OSMesa,
-// with no X server and no DISPLAY. `tunnelmap-cli render ARGS...` execs this binary.
+// tunnelmap-render: renders the GUI's 3D scene of one processed frame, or a map mesh PLY, to a
+// PNG through OSMesa, with no X server and no DISPLAY. `tunnelmap-cli render ARGS...` execs this
+// binary.
 // Exit codes as tunnelmap-cli: 0 ok, 2 bad usage, 3 bad input, 4 internal/rendering error.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <vtkAutoInit.h>
 
+#include "app/render/map_mesh.h"
+#include "app/render/mesh_view.h"
 #include "app/render/osmesa_window.h"
 #include "app/render/render_options.h"
 #include "core/io/frame_source.h"
@@ -16,7 +19,42 @@ namespace {
 
 using namespace tunnelmap;
 
+// A map mesh PLY: the mesh layer only (unless --layers says otherwise), framed by the tunnel the
+// mesh's walls describe, with a light kit so that no face turned from the camera goes black.
+int run_mesh(const render::RenderOptions& opt) {
+  const render::MapMesh mesh = render::load_map_mesh(opt.input);
+  render::OsMesaWindow window(opt.width, opt.height);
+  scene::TunnelScene scene;
+  scene::SceneGeometry geometry;
+  for (auto* layer : {&geometry.cloud, &geometry.planes, &geometry.boundary, &geometry.traversable,
+                      &geometry.forbidden, &geometry.frustum})
+    *layer = vtkSmartPointer<vtkPolyData>::New();
+  geometry.mesh = mesh.poly;
+  geometry.map = mesh.frame;
+  scene.set_geometry(geometry);
+  scene.show_only(opt.layers.empty() ? std::vector<scene::Layer>{scene::Layer::Mesh} : opt.layers);
+  render::add_boundary_bands(scene.renderer(), mesh.boundary, scene.layer_visible(scene::Layer::Mesh));
+  render::light_mesh(scene.renderer(), mesh.poly);
+  window.add_renderer(scene.renderer());
+  scene.apply_view(opt.view);
+  // Seen from outside, a long map is a thin bar in the middle of the bounding sphere's view.
+  if (opt.view == scene::ViewPreset::Side || opt.view == scene::ViewPreset::Top)
+    scene::fit_view_to_map(scene.renderer(), mesh.frame);
+  const scene::RgbImage image = window.render();
+  scene::save_png(image, opt.screenshot);
+  const TunnelMap& f = mesh.frame;
+  std::cout << opt.screenshot << ": " << image.width << "x" << image.height << ", view "
+            << scene::view_name(opt.view) << ", map mesh " << mesh.triangles << " triangles (length "
+            << f.extent_max_m - f.extent_min_m << " m, width " << f.width_m << " m, height " << f.height_m
+            << " m)";
+  const scene::PixelBox box = render::projected_box(scene.renderer(), mesh.poly, image.width, image.height);
+  if (box.count > 0) std::cout << ", mesh box " << box.x0 << "," << box.y0 << " " << box.x1 << "," << box.y1;
+  std::cout << "\n";
+  return 0;
+}
+
 int run(const render::RenderOptions& opt) {
+  if (render::is_mesh_input(opt.input)) return run_mesh(opt);
   Parameters params;
   if (!opt.params_file.empty()) params.load_json_file(opt.params_file);
   for (const auto& s : opt.sets) params.set_from_string(s);
@@ -38,7 +76,13 @@ int run(const render::RenderOptions& opt) {
   const TunnelMap& map = processed.result.map;
   std::cout << opt.screenshot << ": " << image.width << "x" << image.height << ", view "
             << scene::view_name(opt.view) << ", tunnel " << map.status;
-  if (map.detected) std::cout << " (width " << map.width_m << " m, height " << map.height_m << " m)";
+  if (map.detected) {  // a partial map may leave a dimension unknown
+    std::cout << " (width ";
+    if (map.has_width()) std::cout << map.width_m << " m"; else std::cout << "unknown";
+    std::cout << ", height ";
+    if (map.has_height()) std::cout << map.height_m << " m"; else std::cout << "unknown";
+    std::cout << ")";
+  }
   std::cout << ", " << processed.result.planes.planes.size() << " planes";
   // Where the tunnel is in the image: lets tests check map colours lie inside it.
   const scene::PixelBox box = scene.projected_boundary(image.width, image.height);
@@ -52,12 +96,14 @@ int run(const render::RenderOptions& opt) {
 
 int main(int argc, char** argv) {
   render::RenderOptions opt;
-  CLI::App app{"Renders the 3D inspection scene of one frame to a PNG, headless (OSMesa)",
+  CLI::App app{"Renders the 3D inspection scene of one frame, or a map mesh PLY, to a PNG, headless "
+               "(OSMesa)",
                "tunnelmap-render"};
   std::string view = "along", size = "1280x720", layers;
-  app.add_option("input", opt.input, "Depth PNG, organised PCD or dataset folder")->required();
+  app.add_option("input", opt.input, "Depth PNG, organised PCD, dataset folder, or map mesh PLY")->required();
   app.add_option("--screenshot", opt.screenshot, "Output PNG")->required();
-  app.add_option("--view", view, "Camera: along | side | top | reset")->capture_default_str();
+  auto* view_option = app.add_option("--view", view, "Camera: along | side | top | reset | oblique "
+                                     "(default: along; oblique for a mesh PLY)");
   app.add_option("--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--layers", layers,
                  "Comma-separated layers: cloud,mesh,planes,boundary,traversable,forbidden,"
@@ -72,6 +118,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     opt.view = scene::parse_view(view);
+    if (view_option->count() == 0 && render::is_mesh_input(opt.input)) opt.view = scene::ViewPreset::Oblique;
     render::parse_size(size, opt.width, opt.height);
     if (!layers.empty()) opt.layers = scene::parse_layers(layers);
   } catch (const CLI::ParseError& e) {

@@ -155,9 +155,10 @@ void run(const OrganizedCloud& cloud, const Eigen::Vector3d& up_camera, const Tu
     fail(map, "out_of_template", fmt("hull %.3f x %.3f m outside the template window", map.width_m, map.height_m));
     return;
   }
-  if (context && !context->empty() &&
-      (std::abs(map.width_m - context->width_m()) > opt.context_tolerance_m ||
-       std::abs(map.height_m - context->height_m()) > opt.context_tolerance_m)) {
+  if (context && ((context->has_width() &&
+                   std::abs(map.width_m - context->width_m()) > opt.context_tolerance_m) ||
+                  (context->has_height() &&
+                   std::abs(map.height_m - context->height_m()) > opt.context_tolerance_m))) {
     fail(map, "inconsistent_with_context",
          fmt("hull %.3f x %.3f m differs from the context by more than %.0f mm", map.width_m,
              map.height_m, opt.context_tolerance_m * 1000.0));
@@ -165,6 +166,9 @@ void run(const OrganizedCloud& cloud, const Eigen::Vector3d& up_camera, const Tu
   }
   map.detected = true;
   map.status = "ok";
+  map.width_source = map.height_source = DimensionSource::Measured;
+  for (Wall& w : map.walls)
+    if (w.found) w.source = DimensionSource::Measured;
   map.reason = fmt("width %.3f m, height %.3f m (convex hull)", map.width_m, map.height_m);
 }
 

@@ -13,7 +13,7 @@ double CellResult::mean_abs_error_mm() const {
 void CellAccumulator::add(const FrameResult& r, const std::vector<std::uint16_t>* truth) {
   ++frames_;
   ms_.push_back(r.timings_ms.count("total") ? r.timings_ms.at("total") : 0.0);
-  if (r.map.detected) {
+  if (r.map.width_measured() && r.map.height_measured()) {  // inferred values are not measurements
     widths_.push_back(r.map.width_m);
     heights_.push_back(r.map.height_m);
   }

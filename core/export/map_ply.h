@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "core/tunnel/tunnel_map.h"
 
@@ -22,5 +23,11 @@ constexpr double kMapBorderBandM = 0.01;
 // Points are mapped through `to_world`. Written atomically; InputError on failure.
 void write_map_ply(const std::string& path, const TunnelMap& map, const nlohmann::json& params_json,
                    const Eigen::Isometry3d& to_world = Eigen::Isometry3d::Identity());
+
+// The map of a tunnel whose cross-section changes: one swept rectangle per section (each map's
+// walls and zones, already in the world frame), in one mesh. The header gives the section count
+// and each section's width and height ("comment section <i> <width_m> <height_m>").
+void write_sectioned_map_ply(const std::string& path, const std::vector<TunnelMap>& sections,
+                             const nlohmann::json& params_json);
 
 }  // namespace tunnelmap

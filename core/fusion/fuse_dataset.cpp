@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/fusion/fusion_options.h"
+#include "core/mapping/station_map_builder.h"
 #include "core/pipeline/pipeline.h"
 #include "core/util/error.h"
 
@@ -24,7 +25,8 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   // Pass 1: poses, per-frame detection, volume bounds (frames are not kept: memory stays flat).
   Pipeline pipeline(params);
   pipeline.set_world_up(ds.up);
-  TunnelContext context;
+  // The context of a posed sequence: the station map along the tunnel.
+  StationMapBuilder stations(station_map_options(params), tunnel_options(params));
   Eigen::AlignedBox3d box;
   std::vector<Eigen::Isometry3d> poses;
   for (int i = 0; i < n; ++i) {
@@ -39,7 +41,11 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     ff.index = i;
     ff.pose_source = rp.source;
     ff.camera_to_world = *rp.pose;
-    if (s.detect) ff.map = pipeline.run(f, &context).map;
+    if (s.detect) {
+      FrameResult fr = pipeline.run(f);
+      stations.add_frame(i, fr, *rp.pose);
+      ff.map = std::move(fr.map);
+    }
     extend_depth_bounds(f, *rp.pose, fo, box);
     poses.push_back(*rp.pose);
     r.frames.push_back(std::move(ff));
@@ -65,7 +71,10 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     r.frames[i].pose_group = groups[i];
     scans.push_back({r.frames[i].map, r.frames[i].camera_to_world, r.frames[i].index});
   }
-  if (s.detect) r.merged = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
+  if (s.detect) {
+    r.merged = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
+    r.stations = stations.finish(groups);
+  }
   r.timings_ms["total"] = ms_since(t0);
   return r;
 }

@@ -10,6 +10,7 @@
 #include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/mapping/multi_scan_map.h"
+#include "core/mapping/station_map.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/params/parameters.h"
 #include "core/util/stage_timer.h"
@@ -35,6 +36,7 @@ struct FusionResult {
   std::unique_ptr<TsdfVolume> volume;
   std::vector<FusedFrame> frames;
   MultiScanMap merged;
+  StationMap stations;  // the map along the tunnel: sections that change (`fuse --map`)
   StageTimings timings_ms;  // "load+detect", "integrate", "total"
 };
 

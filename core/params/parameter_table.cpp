@@ -9,6 +9,7 @@ const char* stage_name(Stage s) {
     case Stage::Planes: return "planes";
     case Stage::Tunnel: return "tunnel";
     case Stage::Fusion: return "fusion";
+    case Stage::Map: return "map";
   }
   return "?";
 }
@@ -76,6 +77,23 @@ const std::vector<ParameterSpec>& parameter_table() {
      "Template prior: largest plausible tunnel height"},
     {"zones.forbidden_band_m", "m", 0.15, 0.0, 1.0, 0.005, false, Stage::Tunnel, "Forbidden band",
      "Width of the riveted edge band along each tunnel corner (prior knowledge)"},
+    {"tunnel.design_width_m", "m", 0.0, 0.0, 20.0, 0.001, false, Stage::Tunnel, "Design width",
+     "The tunnel's design width; infers a wall out of view when the sequence gives no context, and "
+     "is the reference of `map` deviations; 0 = no design"},
+    {"tunnel.design_height_m", "m", 0.0, 0.0, 20.0, 0.001, false, Stage::Tunnel, "Design height",
+     "The tunnel's design height (see Design width); 0 = no design"},
+    // The station map of the whole tunnel (docs/tunnel-map.md).
+    {"map.station_step_m", "m", 0.10, 0.02, 2.0, 0.01, false, Stage::Map, "Station step",
+     "Distance between map stations along the tunnel axis"},
+    {"map.tolerance_mm", "mm", 10.0, 0.5, 500.0, 0.5, false, Stage::Map, "Design tolerance",
+     "A station whose width or height deviates from the design by more than this is out of tolerance"},
+    {"map.section_change_mm", "mm", 12.0, 2.0, 500.0, 0.5, false, Stage::Map, "Section change",
+     "Stations whose width or height differs from the current section's by more than this, over at "
+     "least Section length stations, start a new section; shorter runs are outliers"},
+    {"map.min_section_m", "m", 0.3, 0.05, 10.0, 0.05, false, Stage::Map, "Section length",
+     "Shortest stretch of agreeing stations that makes a new section"},
+    {"map.min_station_points", "points", 60, 5, 100000, 5, true, Stage::Map, "Station support",
+     "Fewest wall points (over all frames) that measure a wall at one station"},
     // Multi-frame fusion (docs/fusion.md). Not from the paper: sensible values for a VGA
     // structured-light camera in a ~1 m tunnel.
     {"fusion.voxel_mm", "mm", 8.0, 2.0, 50.0, 0.5, false, Stage::Fusion, "Voxel size",

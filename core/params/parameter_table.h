@@ -8,7 +8,8 @@ namespace tunnelmap {
 
 // The first pipeline stage a parameter affects: changing it re-runs that stage and later ones.
 // Fusion: multi-frame TSDF fusion (`fuse`), after the per-frame stages; changing it re-runs none.
-enum class Stage { Cloud = 0, Normals = 1, Planes = 2, Tunnel = 3, Fusion = 4 };
+// Map: the station map of the whole tunnel (`map`, `fuse --map`); changing it re-runs none.
+enum class Stage { Cloud = 0, Normals = 1, Planes = 2, Tunnel = 3, Fusion = 4, Map = 5 };
 const char* stage_name(Stage s);
 
 struct ParameterSpec {

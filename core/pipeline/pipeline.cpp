@@ -47,6 +47,8 @@ TunnelOptions tunnel_options(const Parameters& p) {
   o.height_max_m = p.get("tunnel.height_max_m");
   o.forbidden_band_m = p.get("zones.forbidden_band_m");
   o.max_symmetric_step_m = p.get("tunnel.symmetric_step_max_mm") / 1000.0;
+  o.design_width_m = p.get("tunnel.design_width_m");
+  o.design_height_m = p.get("tunnel.design_height_m");
   return o;
 }
 

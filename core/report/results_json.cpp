@@ -1,5 +1,7 @@
 #include "core/report/results_json.h"
 
+#include "core/report/json_numbers.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -7,14 +9,7 @@
 namespace tunnelmap {
 
 namespace {
-nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
-
-// Rounds to `unit` (a power of ten below 1) so that the JSON shows short numbers: dividing by
-// the exact integer scale gives the double nearest the decimal, which prints shortest.
-double round_to(double v, double unit) {
-  const double scale = std::round(1.0 / unit);
-  return std::round(v * scale) / scale;
-}
+const auto& vec = json_vec;
 
 nlohmann::json timings_json(const StageTimings& t) {
   nlohmann::json j = nlohmann::json::object();
@@ -48,14 +43,42 @@ nlohmann::json detection_frame_json(std::size_t index, const std::string& source
   j["detected"] = m.detected;
   j["status"] = m.status;
   if (!m.reason.empty()) j["reason"] = m.reason;
-  j["width_m"] = m.detected ? nlohmann::json(round_to(m.width_m, 1e-5)) : nlohmann::json(nullptr);
-  j["height_m"] = m.detected ? nlohmann::json(round_to(m.height_m, 1e-5)) : nlohmann::json(nullptr);
+  j["width_m"] = m.has_width() ? nlohmann::json(round_to(m.width_m, 1e-5)) : nlohmann::json(nullptr);
+  j["height_m"] = m.has_height() ? nlohmann::json(round_to(m.height_m, 1e-5)) : nlohmann::json(nullptr);
+  const auto source_name = [&](DimensionSource s) {
+    return m.detected && s != DimensionSource::Unseen ? nlohmann::json(dimension_source_name(s))
+                                                      : nlohmann::json(nullptr);
+  };
+  j["width_source"] = source_name(m.width_source);
+  j["height_source"] = source_name(m.height_source);
+  nlohmann::json measured = nlohmann::json::array(), inferred = nlohmann::json::array();
+  for (int c = 0; c < 4; ++c) {
+    const Wall& w = m.walls[c];
+    if (!m.detected || !w.found) continue;
+    (w.source == DimensionSource::Measured ? measured : inferred)
+        .push_back(wall_class_name(static_cast<WallClass>(c)));
+  }
+  j["measured_walls"] = measured;
+  j["inferred_walls"] = inferred;
+  if (!m.parts.empty()) {  // posed frames: each section the frame saw, measured separately
+    nlohmann::json parts = nlohmann::json::array();
+    const auto num = [](double v) {
+      return std::isfinite(v) ? nlohmann::json(round_to(v, 1e-5)) : nlohmann::json(nullptr);
+    };
+    for (const TunnelPart& p : m.parts)
+      parts.push_back({{"from_m", round_to(p.from_m, 1e-4)},
+                       {"to_m", round_to(p.to_m, 1e-4)},
+                       {"width_m", num(p.width_m)},
+                       {"height_m", num(p.height_m)}});
+    j["parts"] = parts;
+  }
   j["planes"] = r.planes.planes.size();
   nlohmann::json walls = nlohmann::json::object();
   for (int c = 0; c < 4; ++c) {
     const Wall& w = m.walls[c];
     if (!w.found) continue;
     nlohmann::json wj;
+    wj["source"] = dimension_source_name(w.source);
     wj["normal"] = vec(w.normal);
     wj["offset_m"] = round_to(w.offset_m, 1e-6);
     nlohmann::json clusters = nlohmann::json::array();
@@ -101,8 +124,10 @@ void DetectionSummary::add(const FrameResult& r) {
   totals_.push_back(r.timings_ms.count("total") ? r.timings_ms.at("total") : 0.0);
   if (!r.map.detected) return;
   ++detected;
-  widths_.push_back(r.map.width_m);
-  heights_.push_back(r.map.height_m);
+  if (r.map.status == "partial") ++partial;
+  // Statistics of what was measured: an inferred value is the context's or the design's.
+  if (r.map.width_measured()) widths_.push_back(r.map.width_m);
+  if (r.map.height_measured()) heights_.push_back(r.map.height_m);
 }
 
 void DetectionSummary::finish() {
@@ -124,6 +149,7 @@ nlohmann::json DetectionSummary::to_json() const {
   nlohmann::json j;
   j["frames"] = frames;
   j["detected"] = detected;
+  j["partial"] = partial;
   j["width_mean_m"] = round_to(width_mean_m, 1e-5);
   j["width_std_m"] = round_to(width_std_m, 1e-5);
   j["height_mean_m"] = round_to(height_mean_m, 1e-5);

@@ -24,6 +24,7 @@ nlohmann::json planes_frame_json(std::size_t index, const std::string& source,
 struct DetectionSummary {
   int frames = 0;
   int detected = 0;
+  int partial = 0;  // of the detected, frames with a wall out of view
   double width_mean_m = 0, width_std_m = 0, height_mean_m = 0, height_std_m = 0;
   std::optional<double> gt_width_m, gt_height_m;
   double width_abs_error_mean_m = 0, height_abs_error_mean_m = 0;  // valid when gt is known

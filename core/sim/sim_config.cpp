@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/sim/sim_sections.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -19,6 +20,50 @@ void check_range(const char* name, double v, double lo, double hi) {
   if (!std::isfinite(v) || v < lo || v > hi)
     throw ParameterError("simulator: " + std::string(name) + " = " + fmt(v) +
                          " is out of range [" + fmt(lo) + ", " + fmt(hi) + "]");
+}
+
+void check_pose(const char* what, const SimCameraPose& p, double max_t, double width,
+                double height) {
+  // Keep the camera at least 2 cm inside the middle plates.
+  const std::string w(what);
+  check_range((w + " y_rel").c_str(), p.y_rel, -0.5 + (max_t + 0.02) / width,
+              0.5 - (max_t + 0.02) / width);
+  check_range((w + " z_rel").c_str(), p.z_rel, (max_t + 0.02) / height,
+              1.0 - (max_t + 0.02) / height);
+  check_range((w + " roll_deg").c_str(), p.roll_deg, -60.0, 60.0);
+  check_range((w + " pitch_deg").c_str(), p.pitch_deg, -60.0, 60.0);
+  check_range((w + " yaw_deg").c_str(), p.yaw_deg, -60.0, 60.0);
+}
+
+// Sections, diaphragms and the walk (docs/simulator.md); positions within +-1 km.
+void check_layout(const SimConfig& c) {
+  constexpr double kFar = 1000.0;
+  if (c.sections.size() > 1000)
+    throw ParameterError("simulator: " + std::to_string(c.sections.size()) +
+                         " sections is too many (at most 1000)");
+  for (std::size_t k = 0; k < c.sections.size(); ++k) {
+    const SimSection& s = c.sections[k];
+    const std::string name = "sections[" + std::to_string(k) + "]";
+    if (!std::isfinite(s.length_m) || s.length_m <= 0.0 || s.length_m > kFar)
+      throw ParameterError("simulator: " + name + ".length_m = " + fmt(s.length_m) +
+                           " must be > 0 and at most " + fmt(kFar));
+    check_range((name + ".width_m").c_str(), s.width_m, 0.3, 5.0);
+    check_range((name + ".height_m").c_str(), s.height_m, 0.3, 5.0);
+  }
+  check_range("sections_start_x_m", c.sections_start_x_m, -kFar, kFar);
+  if (c.diaphragm_x_m.size() > 1000)
+    throw ParameterError("simulator: " + std::to_string(c.diaphragm_x_m.size()) +
+                         " diaphragms is too many (at most 1000)");
+  for (double x : c.diaphragm_x_m) check_range("diaphragm_x_m", x, -kFar, kFar);
+  if (c.walk) {
+    check_range("walk start_x_m", c.walk->start_x_m, -kFar, kFar);
+    check_range("walk end_x_m", c.walk->end_x_m, -kFar, kFar);
+    check_range("walk stops", c.walk->stops, 1, 100000);
+    if (c.frames < c.walk->stops)
+      throw ParameterError("simulator: frames = " + std::to_string(c.frames) +
+                           " is fewer than the walk's " + std::to_string(c.walk->stops) +
+                           " stops (each stop needs a frame)");
+  }
 }
 
 }  // namespace
@@ -79,11 +124,15 @@ void SimConfig::validate() const {
   check_range("width_m", width_m, 0.3, 5.0);
   check_range("height_m", height_m, 0.3, 5.0);
   check_range("frames", frames, 1, 100000);
+  check_layout(*this);
+  // Checks that depend on the cross-section hold for the smallest section.
+  const sim::SimSections layout(*this);
+  const double min_w = layout.min_width(), min_h = layout.min_height();
   if (distance_to_manhole_m) check_range("distance_to_manhole_m", *distance_to_manhole_m, 0.5, 50.0);
   for (double d : manhole_distances_m) check_range("manhole_distances_m", d, 0.5, 50.0);
-  if (distance_to_manhole_m || !manhole_distances_m.empty()) {
-    check_range("manhole_width_m", manhole_width_m, 0.05, width_m - 0.02);
-    check_range("manhole_height_m", manhole_height_m, 0.05, height_m - 0.02);
+  if (distance_to_manhole_m || !manhole_distances_m.empty() || !diaphragm_x_m.empty()) {
+    check_range("manhole_width_m", manhole_width_m, 0.05, min_w - 0.02);
+    check_range("manhole_height_m", manhole_height_m, 0.05, min_h - 0.02);
   }
   if (end_wall_distance_m) check_range("end_wall_distance_m", *end_wall_distance_m, 0.1, 100.0);
   check_range("noise_scale", noise_scale, 0.0, 10.0);
@@ -91,7 +140,7 @@ void SimConfig::validate() const {
   check_range("roll_deg", roll_deg, -60.0, 60.0);
   check_range("pitch_deg", pitch_deg, -60.0, 60.0);
   check_range("yaw_deg", yaw_deg, -60.0, 60.0);
-  const double min_side = std::min(width_m, height_m);
+  const double min_side = std::min(min_w, min_h);
   check_range("edge_band_m", edge_band_m, 0.0, 0.5 * min_side - 0.05);
   for (double t : plate_thickness_m) check_range("plate_thickness_m", t, 0.0, 0.05);
   check_range("rivet_radius_m", rivet_radius_m, 0.001, 0.05);
@@ -111,16 +160,13 @@ void SimConfig::validate() const {
   check_range("grazing_dropout_full_deg", grazing_dropout_full_deg, 1.0, 90.0);
   check_range("grazing_dropout_start_deg", grazing_dropout_start_deg, 0.0,
               grazing_dropout_full_deg - 0.1);
-  if (poses.empty()) throw ParameterError("simulator: no camera poses configured");
   const double max_t = std::max(std::max(plate_thickness_m[0], plate_thickness_m[1]),
                                 std::max(plate_thickness_m[2], plate_thickness_m[3]));
-  for (const SimCameraPose& p : poses) {
-    // Keep the camera at least 2 cm inside the middle plates.
-    check_range("pose y_rel", p.y_rel, -0.5 + (max_t + 0.02) / width_m, 0.5 - (max_t + 0.02) / width_m);
-    check_range("pose z_rel", p.z_rel, (max_t + 0.02) / height_m, 1.0 - (max_t + 0.02) / height_m);
-    check_range("pose roll_deg", p.roll_deg, -60.0, 60.0);
-    check_range("pose pitch_deg", p.pitch_deg, -60.0, 60.0);
-    check_range("pose yaw_deg", p.yaw_deg, -60.0, 60.0);
+  if (walk) {
+    check_pose("walk pose", walk->pose, max_t, min_w, min_h);  // the walk replaces `poses`
+  } else {
+    if (poses.empty()) throw ParameterError("simulator: no camera poses configured");
+    for (const SimCameraPose& p : poses) check_pose("pose", p, max_t, min_w, min_h);
   }
   check_range("jitter_translation_m", jitter_translation_m, 0.0, 0.05);
   check_range("jitter_rotation_deg", jitter_rotation_deg, 0.0, 5.0);

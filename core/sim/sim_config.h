@@ -22,6 +22,22 @@ struct SimCameraPose {
   double yaw_deg = 0.0;
 };
 
+// One stretch of constant cross-section (see SimConfig::sections).
+struct SimSection {
+  double length_m = 1.0;
+  double width_m = 0.82;
+  double height_m = 1.30;
+};
+
+// A walk of the robot along the tunnel: `stops` camera stations evenly spaced from start_x_m
+// to end_x_m (world X), one contiguous pose group per stop, each at `pose` (relative to the
+// cross-section of the section at that station).
+struct SimWalk {
+  double start_x_m = 0.0, end_x_m = 2.0;
+  int stops = 5;
+  SimCameraPose pose;
+};
+
 // Wall order used for per-wall arrays: left (y = +W/2), right (y = -W/2), top (z = H),
 // bottom (z = 0).
 enum SimWall { kSimLeft = 0, kSimRight = 1, kSimTop = 2, kSimBottom = 3 };
@@ -31,6 +47,12 @@ struct SimConfig {
   std::string preset = "lab";  // "lab" | "field"
   double width_m = 0.82;       // W: between the outermost (edge-band) surfaces
   double height_m = 1.30;      // H
+  // Sections whose cross-section changes along the tunnel. Empty = one constant section of
+  // width_m x height_m; otherwise width_m/height_m are not used by the geometry. Section k
+  // spans [x_k, x_k + length_k) with x_0 = sections_start_x_m; the first section continues
+  // before x_0 and the last one after its end. Cross-sections stay centred on y = 0, floor z = 0.
+  std::vector<SimSection> sections;
+  double sections_start_x_m = 0.0;
   int frames = 30;             // total frames, split into contiguous pose groups
 
   // Manhole plate. `distance_to_manhole_m` forces one distance for every frame; otherwise the
@@ -39,7 +61,11 @@ struct SimConfig {
   std::vector<double> manhole_distances_m;
   double manhole_width_m = 0.45;   // elliptical opening, centred in the cross-section
   double manhole_height_m = 0.70;
-  // End wall: this far beyond the manhole plate if there is one, else beyond the camera.
+  // Manhole diaphragms: more transverse plates at these world X positions, each with the same
+  // opening, centred in that section's cross-section. Seen from both sides.
+  std::vector<double> diaphragm_x_m;
+  // End wall: this far beyond the manhole plate if there is one, else beyond the camera (with
+  // a walk: beyond its furthest station, or the plate if that is further).
   std::optional<double> end_wall_distance_m = 3.0;
 
   unsigned seed = 1;
@@ -76,6 +102,8 @@ struct SimConfig {
   std::vector<SimCameraPose> poses{{0.0, 0.85, 0.0, -15.0, 0.0},
                                    {0.27, 0.50, 0.0, -3.0, -10.0},
                                    {-0.18, 0.35, 10.0, 5.0, 8.0}};
+  // When set, replaces the pose groups above (and the manhole distances' camera placement).
+  std::optional<SimWalk> walk;
   double jitter_translation_m = 0.002;
   double jitter_rotation_deg = 0.2;
   double frame_interval_s = 1.0 / 30.0;

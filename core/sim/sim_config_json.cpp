@@ -6,6 +6,15 @@ namespace tunnelmap {
 
 using nlohmann::json;
 
+namespace {
+
+json pose_to_json(const SimCameraPose& p) {
+  return {{"y_rel", p.y_rel}, {"z_rel", p.z_rel}, {"roll_deg", p.roll_deg},
+          {"pitch_deg", p.pitch_deg}, {"yaw_deg", p.yaw_deg}};
+}
+
+}  // namespace
+
 json sim_config_to_json(const SimConfig& c) {
   json j;
   j["preset"] = c.preset;
@@ -45,10 +54,21 @@ json sim_config_to_json(const SimConfig& c) {
   j["grazing_dropout_start_deg"] = c.grazing_dropout_start_deg;
   j["grazing_dropout_full_deg"] = c.grazing_dropout_full_deg;
   json poses = json::array();
-  for (const SimCameraPose& p : c.poses)
-    poses.push_back({{"y_rel", p.y_rel}, {"z_rel", p.z_rel}, {"roll_deg", p.roll_deg},
-                     {"pitch_deg", p.pitch_deg}, {"yaw_deg", p.yaw_deg}});
+  for (const SimCameraPose& p : c.poses) poses.push_back(pose_to_json(p));
   j["poses"] = poses;
+  // Written only when used, so datasets of the constant tunnel keep their exact bytes.
+  if (!c.sections.empty() || c.sections_start_x_m != 0.0) {
+    json sections = json::array();
+    for (const SimSection& s : c.sections)
+      sections.push_back(
+          {{"length_m", s.length_m}, {"width_m", s.width_m}, {"height_m", s.height_m}});
+    j["sections"] = sections;
+    j["sections_start_x_m"] = c.sections_start_x_m;
+  }
+  if (!c.diaphragm_x_m.empty()) j["diaphragm_x_m"] = c.diaphragm_x_m;
+  if (c.walk)
+    j["walk"] = {{"start_x_m", c.walk->start_x_m}, {"end_x_m", c.walk->end_x_m},
+                 {"stops", c.walk->stops}, {"pose", pose_to_json(c.walk->pose)}};
   j["jitter_translation_m"] = c.jitter_translation_m;
   j["jitter_rotation_deg"] = c.jitter_rotation_deg;
   j["frame_interval_s"] = c.frame_interval_s;
@@ -70,6 +90,16 @@ void read_optional(const json& j, const char* key, std::optional<T>& out) {
   if (!j.contains(key)) return;
   if (j.at(key).is_null()) out.reset();
   else out = j.at(key).get<T>();
+}
+
+SimCameraPose read_pose(const json& p) {
+  SimCameraPose q;
+  read(p, "y_rel", q.y_rel);
+  read(p, "z_rel", q.z_rel);
+  read(p, "roll_deg", q.roll_deg);
+  read(p, "pitch_deg", q.pitch_deg);
+  read(p, "yaw_deg", q.yaw_deg);
+  return q;
 }
 
 }  // namespace
@@ -118,15 +148,34 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "grazing_dropout_full_deg", c.grazing_dropout_full_deg);
     if (j.contains("poses")) {
       c.poses.clear();
-      for (const json& p : j.at("poses")) {
-        SimCameraPose q;
-        read(p, "y_rel", q.y_rel);
-        read(p, "z_rel", q.z_rel);
-        read(p, "roll_deg", q.roll_deg);
-        read(p, "pitch_deg", q.pitch_deg);
-        read(p, "yaw_deg", q.yaw_deg);
-        c.poses.push_back(q);
+      for (const json& p : j.at("poses")) c.poses.push_back(read_pose(p));
+    }
+    if (j.contains("sections")) {
+      c.sections.clear();
+      if (!j.at("sections").is_array())
+        throw InputError(source, "simulator sections must be an array");
+      for (const json& s : j.at("sections")) {
+        if (!s.is_object())
+          throw InputError(source,
+                           "every simulator section must be an object {length_m, width_m, height_m}");
+        SimSection q;
+        read(s, "length_m", q.length_m);
+        read(s, "width_m", q.width_m);
+        read(s, "height_m", q.height_m);
+        c.sections.push_back(q);
       }
+    }
+    read(j, "sections_start_x_m", c.sections_start_x_m);
+    read(j, "diaphragm_x_m", c.diaphragm_x_m);
+    if (j.contains("walk") && !j.at("walk").is_null()) {
+      const json& w = j.at("walk");
+      if (!w.is_object()) throw InputError(source, "simulator walk must be an object or null");
+      SimWalk walk;
+      read(w, "start_x_m", walk.start_x_m);
+      read(w, "end_x_m", walk.end_x_m);
+      read(w, "stops", walk.stops);
+      if (w.contains("pose")) walk.pose = read_pose(w.at("pose"));
+      c.walk = walk;
     }
     read(j, "jitter_translation_m", c.jitter_translation_m);
     read(j, "jitter_rotation_deg", c.jitter_rotation_deg);

@@ -1,5 +1,6 @@
 #include "core/sim/sim_dataset_writer.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -73,6 +74,21 @@ json pose_json(const Eigen::Isometry3d& T) {
 
 json vec_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 
+// The sections the cameras can see: every span met between the smallest camera x and the
+// largest, each widened by the sensor range, clipped to that extent.
+json sections_json(const TunnelSimulator& sim, double min_cam_x, double max_cam_x) {
+  const double lo = min_cam_x - sim.config().max_depth_m, hi = max_cam_x + sim.config().max_depth_m;
+  json out = json::array();
+  for (const sim::SimSpan& s : sim.sections().spans()) {
+    if (s.to_x <= lo || s.from_x >= hi) continue;
+    out.push_back({{"from_x_m", std::max(s.from_x, lo)},
+                   {"to_x_m", std::min(s.to_x, hi)},
+                   {"width_m", s.width_m},
+                   {"height_m", s.height_m}});
+  }
+  return out;
+}
+
 }  // namespace
 
 void write_sim_dataset(const std::string& out_dir, const SimConfig& config) {
@@ -91,8 +107,13 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
   const Intrinsics K = Intrinsics::primesense_vga();
   json frames = json::array();
   json robot_json;  // null without an arm
+  double first_x = 0.0, min_x = 0.0, max_x = 0.0;  // camera x of the rendered frames
   for (int i = 0; i < sim.frame_count(); ++i) {
     const SimFrame f = sim.render(i);
+    const double cam_x = f.frame.pose->translation().x();
+    if (i == 0) first_x = min_x = max_x = cam_x;
+    min_x = std::min(min_x, cam_x);
+    max_x = std::max(max_x, cam_x);
     const int w = f.frame.width, h = f.frame.height;
     cv::Mat depth(h, w, CV_16UC1), gt(h, w, CV_16UC1), bgr(h, w, CV_8UC3);
     for (int v = 0; v < h; ++v)
@@ -132,19 +153,29 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     if (progress) progress(i, sim.frame_count(), (root / "depth" / name).string());
   }
 
+  const bool sectioned = !config.sections.empty();
   json surfaces = json::array();
-  for (const SimSurface& s : sim.surfaces())
-    surfaces.push_back({{"id", s.id},
-                        {"name", s.name},
-                        {"wall", s.wall},
-                        {"zone", s.zone},
-                        {"normal", vec_json(s.normal_world)},
-                        {"offset_m", s.offset_world}});
-  json gt = {{"width_m", config.width_m},
-             {"height_m", config.height_m},
+  for (const SimSurface& s : sim.surfaces()) {
+    json sj = {{"id", s.id},
+               {"name", s.name},
+               {"wall", s.wall},
+               {"zone", s.zone},
+               {"normal", vec_json(s.normal_world)},
+               {"offset_m", s.offset_world}};
+    if (sectioned && s.section >= 0) sj["section"] = s.section;
+    surfaces.push_back(sj);
+  }
+  // The cross-section at the first camera (the only one without sections).
+  json gt = {{"width_m", sim.width_at(first_x)},
+             {"height_m", sim.height_at(first_x)},
              {"rivet_id", kSimRivetId},
              {"surfaces", surfaces}};
   if (sim.manhole_x()) gt["manhole_x_m"] = *sim.manhole_x();
+  // Only for the new layouts, so datasets of the constant tunnel keep their exact bytes.
+  if (sectioned || !config.diaphragm_x_m.empty() || config.walk) {
+    gt["sections"] = sections_json(sim, min_x, max_x);
+    gt["diaphragms_x_m"] = sim.diaphragms_x();
+  }
 
   json dataset = {
       {"format", kSimDatasetFormat},

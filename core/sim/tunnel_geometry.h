@@ -5,7 +5,11 @@
 // thickness) | edge band; the small faces where a plate steps down to an edge band are
 // surfaces too (zone "step"). Rivets are spherical-cap domes on the edge bands. An optional
 // manhole plate (transverse, with an elliptic opening) and an optional end wall close the view.
+// With sections, every section has its own walls (and ids), cut at the joints, where the part
+// of the transverse plane between the two cross-sections is a surface of its own; diaphragms
+// are further plates with the manhole opening.
 #include <Eigen/Geometry>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -21,9 +25,10 @@ namespace tunnelmap {
 // the cameras.
 struct SimSurface {
   int id = 0;
-  std::string name;  // e.g. "left/edge_bottom", "top/middle", "manhole"
-  std::string wall;  // "left","right","top","bottom","manhole","end"
-  std::string zone;  // "edge","middle","step" or "" (manhole plate, end wall)
+  std::string name;  // e.g. "left/edge_bottom", "section1/top/middle", "joint/0", "diaphragm/2"
+  std::string wall;  // "left","right","top","bottom","joint","manhole","diaphragm","end"
+  std::string zone;  // "edge","middle","step" or "" (joints and transverse plates)
+  int section = -1;  // wall surfaces: their section (0 without sections); -1 otherwise
   Eigen::Vector3d normal_world = Eigen::Vector3d::Zero();
   double offset_world = 0.0;
 
@@ -39,6 +44,7 @@ struct RayHit {
   double t = std::numeric_limits<double>::infinity();  // distance along the unit ray
   int surface_id = 0;        // SimSurface id, kSimRivetId, or 0 for nothing
   int wall = -1;             // SimWall of a wall surface or rivet, -1 otherwise
+  int section = -1;          // section of a wall surface or rivet, -1 otherwise
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, towards the ray origin side
   double plane_offset = 0.0;                         // planar hits: normal.dot(x) + offset = 0
@@ -68,6 +74,7 @@ class TunnelGeometry {
 
  private:
   struct Wall {
+    int index;           // SimWall
     Eigen::Vector3d n;   // inward normal
     double d_outer;      // outer plane: n.x + d_outer = 0
     Eigen::Vector3d es;  // across the wall, from one corner to the other
@@ -76,22 +83,43 @@ class TunnelGeometry {
     int edge_lo_id, middle_id, edge_hi_id, step_lo_id, step_hi_id;
     std::vector<double> rivet_row_s, rivet_row_phase;
   };
+  struct Section {
+    double from_x, to_x;  // [from_x, to_x): the walls' extent along X
+    std::vector<Wall> walls;
+    bool contains_x(double x) const { return x >= from_x && x < to_x; }
+    // (y, z) of p lies in the free cross-section (not behind a wall or inside a plate).
+    bool open(const Eigen::Vector3d& p) const;
+  };
+  struct Plate {
+    double x, centre_z;  // opening centred at (y = 0, centre_z)
+    int id;
+  };
   struct RustPatch {
     double x, s, rx, rs;  // ellipse centre and semi-axes in wall coordinates
   };
 
-  void cast_wall(const Wall& w, const Eigen::Vector3d& o, const Eigen::Vector3d& r,
-                 RayHit& best) const;
-  void cast_rivets(const Wall& w, const Eigen::Vector3d& o, const Eigen::Vector3d& r, double h0,
-                   double dn, RayHit& best) const;
+  void build_section(int k, double from_x, double to_x, double W, double H, int& next_id);
+  void make_rust();
+  void cast_sections(const Eigen::Vector3d& o, const Eigen::Vector3d& r, RayHit& best) const;
+  void cast_wall(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
+                 const Eigen::Vector3d& r, RayHit& best) const;
+  void cast_rivets(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
+                   const Eigen::Vector3d& r, double h0, double dn, RayHit& best) const;
+  void cast_plate(const Plate& p, bool two_sided, const Eigen::Vector3d& o,
+                  const Eigen::Vector3d& r, RayHit& best) const;
   double value_noise(int wall, double x, double s, double cell) const;
 
   SimConfig config_;
-  std::vector<Wall> walls_;
+  std::vector<Section> sections_;       // in order along X
+  std::vector<int> joint_ids_;          // joint k: between sections k and k + 1
+  std::array<Eigen::Vector3d, 4> wall_es_;  // per SimWall, the same in every section
+  std::array<double, 4> rust_s_min_{}, rust_s_max_{};  // per SimWall, over all sections
   std::vector<std::vector<RustPatch>> rust_;  // per wall
   std::vector<SimSurface> surfaces_;
   std::optional<double> manhole_x_, end_x_;
-  int manhole_id_ = 0, end_id_ = 0;
+  std::optional<Plate> manhole_;
+  std::vector<Plate> diaphragms_;
+  int end_id_ = 0;
   double sphere_radius_ = 0.0, sphere_depth_ = 0.0;  // rivet sphere; centre behind the plane
   std::uint64_t texture_key_ = 0;
 };

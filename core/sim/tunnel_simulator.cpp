@@ -42,14 +42,29 @@ std::optional<double> TunnelSimulator::compute_manhole_x(const SimConfig& c) {
 
 std::optional<double> TunnelSimulator::compute_end_x(const SimConfig& c) {
   if (!c.end_wall_distance_m) return std::nullopt;
-  return compute_manhole_x(c).value_or(0.0) + *c.end_wall_distance_m;
+  const std::optional<double> manhole = compute_manhole_x(c);
+  if (!c.walk) return manhole.value_or(0.0) + *c.end_wall_distance_m;
+  // A walk must not run into the end wall: beyond its furthest station (or the plate).
+  double x = std::max(c.walk->start_x_m, c.walk->end_x_m);
+  if (manhole) x = std::max(x, *manhole);
+  return x + *c.end_wall_distance_m;
 }
 
 TunnelSimulator::TunnelSimulator(SimConfig config)
     : config_(validated(config)),
+      sections_(config_),
       manhole_x_(compute_manhole_x(config_)),
       geometry_(config_, manhole_x_, compute_end_x(config_)) {
-  groups_ = std::max(static_cast<int>(config_.poses.size()), distance_count(config_));
+  groups_ = config_.walk
+                ? config_.walk->stops
+                : std::max(static_cast<int>(config_.poses.size()), distance_count(config_));
+}
+
+std::vector<double> TunnelSimulator::diaphragms_x() const {
+  std::vector<double> x = config_.diaphragm_x_m;
+  if (manhole_x_) x.push_back(*manhole_x_);
+  std::sort(x.begin(), x.end());
+  return x;
 }
 
 const SimSurface* TunnelSimulator::surface(int id) const {
@@ -63,6 +78,12 @@ int TunnelSimulator::pose_group(int index) const {
 }
 
 std::optional<double> TunnelSimulator::distance_to_manhole(int index) const {
+  if (config_.walk) {
+    if (!manhole_x_) return std::nullopt;
+    const double d = *manhole_x_ - group_x(pose_group(index));
+    if (d > 0.0) return d;
+    return std::nullopt;
+  }
   if (distance_count(config_) == 0) return std::nullopt;
   return distance_at(config_, pose_group(index));
 }
@@ -82,6 +103,13 @@ Eigen::Matrix3d TunnelSimulator::camera_rotation(double roll_deg, double pitch_d
 }
 
 double TunnelSimulator::group_x(int g) const {
+  if (config_.walk) {
+    // Stations evenly spaced from start to end (one stop: at the start).
+    const SimWalk& w = *config_.walk;
+    if (w.stops <= 1) return w.start_x_m;
+    if (g >= w.stops - 1) return w.end_x_m;  // exactly, not start + (end - start)
+    return w.start_x_m + (w.end_x_m - w.start_x_m) * g / (w.stops - 1);
+  }
   return manhole_x_ ? *manhole_x_ - distance_at(config_, g) : 0.0;
 }
 
@@ -97,7 +125,8 @@ std::optional<SimArmState> TunnelSimulator::arm_state(int index) const {
 
 Eigen::Isometry3d TunnelSimulator::wanted_pose(int index) const {
   const int g = pose_group(index);
-  const SimCameraPose& p = config_.poses[g % config_.poses.size()];
+  const SimCameraPose& p =
+      config_.walk ? config_.walk->pose : config_.poses[g % config_.poses.size()];
   const double x = group_x(g);
   sim::SimRandom rng(config_.seed, static_cast<std::uint32_t>(index), sim::kStreamPose);
   const double jt = config_.jitter_translation_m, jr = config_.jitter_rotation_deg;
@@ -107,8 +136,9 @@ Eigen::Isometry3d TunnelSimulator::wanted_pose(int index) const {
   T.linear() = camera_rotation(p.roll_deg + config_.roll_deg + jroll,
                                p.pitch_deg + config_.pitch_deg + jpitch,
                                p.yaw_deg + config_.yaw_deg + jyaw);
-  T.translation() = Eigen::Vector3d(x + jx, p.y_rel * config_.width_m + jy,
-                                    p.z_rel * config_.height_m + jz);
+  // Relative to the cross-section of the section the station is in.
+  T.translation() =
+      Eigen::Vector3d(x + jx, p.y_rel * width_at(x) + jy, p.z_rel * height_at(x) + jz);
   return T;
 }
 

@@ -11,6 +11,7 @@
 #include "core/frame/depth_frame.h"
 #include "core/sim/sim_arm.h"
 #include "core/sim/sim_config.h"
+#include "core/sim/sim_sections.h"
 #include "core/sim/tunnel_geometry.h"
 
 namespace tunnelmap {
@@ -39,9 +40,23 @@ class TunnelSimulator {
   const SimConfig& config() const { return config_; }
   int group_count() const { return groups_; }
   int pose_group(int index) const;          // contiguous blocks of frames
+  // Nominal camera X of a pose group (a walk's station), before jitter.
+  double group_x(int group) const;
+  // Without a walk: the group's distance; with one: the plate's distance from the frame's
+  // station, when the station is in front of the plate.
   std::optional<double> distance_to_manhole(int index) const;
   std::optional<double> manhole_x() const { return manhole_x_; }  // world X of the plate
   const sim::TunnelGeometry& geometry() const { return geometry_; }
+
+  // The true outermost width / height of the cross-section at world x (a joint's x belongs to
+  // the section after it), and the joints' x in order (empty without sections).
+  double width_at(double x) const { return sections_.at(x).width_m; }
+  double height_at(double x) const { return sections_.at(x).height_m; }
+  std::vector<double> joints_x() const { return sections_.joints_x(); }
+  const sim::SimSections& sections() const { return sections_; }
+  // World X of every transverse plate with the manhole opening (manhole plate and
+  // diaphragms), in increasing order.
+  std::vector<double> diaphragms_x() const;
 
   // Neutral orientation: camera z -> world +X, camera x -> world -Y, camera y -> world -Z,
   // then turned by yaw (about world Z), pitch (nose up) and roll (about the viewing axis).
@@ -51,11 +66,11 @@ class TunnelSimulator {
   static std::optional<double> compute_manhole_x(const SimConfig& c);
   static std::optional<double> compute_end_x(const SimConfig& c);
   Eigen::Isometry3d wanted_pose(int index) const;  // nominal + jitter
-  double group_x(int group) const;
   void render_rows(int index, const Eigen::Isometry3d& T, int row_begin, int row_step,
                    SimFrame& out) const;
 
   SimConfig config_;
+  sim::SimSections sections_;
   std::optional<double> manhole_x_;
   sim::TunnelGeometry geometry_;
   int groups_ = 1;

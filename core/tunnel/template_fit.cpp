@@ -33,6 +33,17 @@ void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector
                               const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
                               const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
                               TemplateFrame& t) {
+  const Eigen::Vector3d means[4] = {n_left, n_right, n_top, n_bottom};
+  const bool seen[4] = {true, true, true, true};
+  // With every wall seen the rough directions are not used.
+  fit_partial_template(means, seen, Eigen::Vector3d::UnitX(), -Eigen::Vector3d::UnitY(),
+                       camera_forward, max_pair_angle_deg, t);
+}
+
+void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
+                          const Eigen::Vector3d& rough_right, const Eigen::Vector3d& rough_up,
+                          const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
+                          TemplateFrame& t) {
   {  // Default values in every field, but the strings keep their buffers.
     TemplateFrame fresh;
     fresh.status.swap(t.status);
@@ -41,35 +52,52 @@ void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector
     fresh.reason.clear();
     t = std::move(fresh);
   }
-  t.left_right_angle_deg = angle_deg(n_left, -n_right);
-  t.top_bottom_angle_deg = angle_deg(n_bottom, -n_top);
-  if (t.left_right_angle_deg > max_pair_angle_deg) {
-    t.status = "no_parallel_pair";
-    set_text(t.reason, "left and right walls are %.1f deg from parallel (max %.1f)",
-             t.left_right_angle_deg, max_pair_angle_deg);
-    return;
+  if (seen[0] && seen[1]) {
+    t.left_right_angle_deg = angle_deg(means[0], -means[1]);
+    if (t.left_right_angle_deg > max_pair_angle_deg) {
+      t.status = "no_parallel_pair";
+      set_text(t.reason, "left and right walls are %.1f deg from parallel (max %.1f)",
+               t.left_right_angle_deg, max_pair_angle_deg);
+      return;
+    }
   }
-  if (t.top_bottom_angle_deg > max_pair_angle_deg) {
-    t.status = "no_parallel_pair";
-    set_text(t.reason, "top and bottom walls are %.1f deg from parallel (max %.1f)",
-             t.top_bottom_angle_deg, max_pair_angle_deg);
-    return;
+  if (seen[2] && seen[3]) {
+    t.top_bottom_angle_deg = angle_deg(means[3], -means[2]);
+    if (t.top_bottom_angle_deg > max_pair_angle_deg) {
+      t.status = "no_parallel_pair";
+      set_text(t.reason, "top and bottom walls are %.1f deg from parallel (max %.1f)",
+               t.top_bottom_angle_deg, max_pair_angle_deg);
+      return;
+    }
   }
-  // One direction per pair; both walls of a pair contribute equally.
-  const Eigen::Vector3d a = (n_left - n_right).normalized();
-  const Eigen::Vector3d b = (n_bottom - n_top).normalized();
-  t.pair_angle_deg = std::abs(angle_deg(a, b) - 90.0);
-  if (t.pair_angle_deg > max_pair_angle_deg) {
-    t.status = "not_rectangular";
-    set_text(t.reason, "wall pairs are %.1f deg from perpendicular (max %.1f)", t.pair_angle_deg,
-             max_pair_angle_deg);
-    return;
+  // One direction per pair from the walls seen of it (inward normals: left faces right).
+  const bool have_a = seen[0] || seen[1], have_b = seen[2] || seen[3];
+  Eigen::Vector3d a = (seen[0] ? means[0] : Eigen::Vector3d::Zero()) -
+                      (seen[1] ? means[1] : Eigen::Vector3d::Zero());
+  Eigen::Vector3d b = (seen[3] ? means[3] : Eigen::Vector3d::Zero()) -
+                      (seen[2] ? means[2] : Eigen::Vector3d::Zero());
+  if (have_a) a.normalize();
+  if (have_b) b.normalize();
+  if (have_a && have_b) {
+    t.pair_angle_deg = std::abs(angle_deg(a, b) - 90.0);
+    if (t.pair_angle_deg > max_pair_angle_deg) {
+      t.status = "not_rectangular";
+      set_text(t.reason, "wall pairs are %.1f deg from perpendicular (max %.1f)", t.pair_angle_deg,
+               max_pair_angle_deg);
+      return;
+    }
+    const Eigen::Vector3d s = (a + b).normalized();
+    const Eigen::Vector3d d = (a - b).normalized();
+    t.right = (s + d).normalized();
+    t.up = (s - d).normalized();
+  } else if (have_a) {
+    // The measured walls fix their own direction exactly; the other comes from "up".
+    t.right = a;
+    t.up = (rough_up - a * a.dot(rough_up)).normalized();
+  } else {
+    t.up = b;
+    t.right = (rough_right - b * b.dot(rough_right)).normalized();
   }
-  // Orthogonalise symmetrically: rotate a and b by half the error each, about their bisector.
-  const Eigen::Vector3d s = (a + b).normalized();
-  const Eigen::Vector3d d = (a - b).normalized();
-  t.right = (s + d).normalized();
-  t.up = (s - d).normalized();
   t.axis = t.up.cross(t.right);
   if (t.axis.dot(camera_forward) < 0) t.axis = -t.axis;
   t.ok = true;

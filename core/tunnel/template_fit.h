@@ -30,4 +30,13 @@ void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector
                               const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
                               TemplateFrame& out);
 
+// With walls out of view: `seen[i]` says whether means[i] (left, right, top, bottom) was
+// measured; at least two walls must be. A pair with both walls seen must be antiparallel as
+// above; a direction no wall gives comes from the rough frame (`rough_right`, `rough_up`) made
+// perpendicular to the measured one. All four seen: the same as fit_rectangular_template.
+void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
+                          const Eigen::Vector3d& rough_right, const Eigen::Vector3d& rough_up,
+                          const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
+                          TemplateFrame& out);
+
 }  // namespace tunnelmap

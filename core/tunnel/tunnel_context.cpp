@@ -1,4 +1,4 @@
-// TunnelContext: the widths/heights accepted from earlier scans of a sequence; medians resist
+// TunnelContext: the widths/heights measured by earlier scans of a sequence; medians resist
 // the occasional bad frame that slipped through.
 #include <algorithm>
 #include <vector>
@@ -21,23 +21,23 @@ double median(const std::vector<double>& values) {
 }
 }  // namespace
 
-void TunnelContext::accept(const TunnelMap& map) {
-  if (!map.detected) return;  // only detected maps define the context
-  if (widths_.size() < kWindow) {
-    if (widths_.empty()) {  // the whole window at once: no reallocation while it fills
-      widths_.reserve(kWindow);
-      heights_.reserve(kWindow);
-    }
-    widths_.push_back(map.width_m);
-    heights_.push_back(map.height_m);
+void TunnelContext::Ring::push(double v) {
+  if (values.size() < kWindow) {
+    if (values.empty()) values.reserve(kWindow);  // no reallocation while the window fills
+    values.push_back(v);
     return;
   }
-  widths_[next_] = map.width_m;
-  heights_[next_] = map.height_m;
-  next_ = (next_ + 1) % kWindow;
+  values[next] = v;
+  next = (next + 1) % kWindow;
 }
 
-double TunnelContext::width_m() const { return median(widths_); }
-double TunnelContext::height_m() const { return median(heights_); }
+void TunnelContext::accept(const TunnelMap& map) {
+  // Only measured dimensions define the context: an inferred one would confirm itself.
+  if (map.width_measured()) width_.push(map.width_m);
+  if (map.height_measured()) height_.push(map.height_m);
+}
+
+double TunnelContext::width_m() const { return median(width_.values); }
+double TunnelContext::height_m() const { return median(height_.values); }
 
 }  // namespace tunnelmap

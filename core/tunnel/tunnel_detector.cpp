@@ -79,6 +79,7 @@ void reset_keeping_buffers(TunnelMap& map) {
   recycle(fresh.plane_classes, map.plane_classes);
   recycle(fresh.plane_outlier, map.plane_outlier);
   recycle(fresh.plane_candidate_classes, map.plane_candidate_classes);
+  recycle(fresh.parts, map.parts);
   for (size_t i = 0; i < fresh.walls.size(); ++i) {
     recycle(fresh.walls[i].clusters, map.walls[i].clusters);
     recycle(fresh.walls[i].zones, map.walls[i].zones);
@@ -102,16 +103,17 @@ void check_options(const TunnelOptions& o) {
     throw ParameterError("tunnel options out of range (angles and gaps must be > 0, class cone <= 45 deg)");
 }
 
-// Steps 1-2: classes, outliers and per-class mean normals. Returns false if a wall is missing.
-bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& rough,
+// Steps 1-2: classes, outliers and per-class mean normals. seen[c]: the class kept a plane.
+// map.reason lists the classes without planes (read only if too few walls remain).
+void classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& rough,
                          const TunnelOptions& opt, TunnelMap& map,
-                         std::array<Eigen::Vector3d, 4>& means) {
+                         Eigen::Vector3d means[4], bool seen[4], double support[4]) {
   const size_t n = planes.planes.size();
   classify_planes(rough, planes, opt.class_angle_deg, map.plane_candidate_classes);
   map.plane_classes = map.plane_candidate_classes;  // copy-assignment reuses the buffer
   map.plane_outlier.assign(n, false);
   DetectorScratch& scr = scratch();
-  std::string& missing = map.reason;  // empty here; only read if a wall is missing
+  std::string& missing = map.reason;
   missing.clear();
   for (WallClass c : kWalls) {
     std::vector<size_t>& members = scr.members;
@@ -128,9 +130,11 @@ bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& ro
     reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg, st);
     Wall& w = map.wall(c);
     w.cls = c;
+    support[static_cast<int>(c)] = 0.0;
     for (size_t k = 0; k < members.size(); ++k) {
       if (st.inlier[k]) {
         ++w.inlier_planes;
+        support[static_cast<int>(c)] += normals[k].weight;
       } else {
         ++w.outlier_planes;
         map.plane_outlier[members[k]] = true;
@@ -139,18 +143,59 @@ bool classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& ro
     }
     w.normal_sd_deg = st.sd_deg;
     means[static_cast<int>(c)] = st.mean;
+    seen[static_cast<int>(c)] = st.valid;
     if (!st.valid) {
       if (!missing.empty()) missing += "; ";
       append_text(missing, "%s wall: %zu planes%s", wall_class_name(c), members.size(),
                   members.empty() ? "" : ", all outliers");
     }
   }
-  if (!missing.empty()) {
-    fail(map, "missing_wall");
-    return false;
-  }
-  return true;
 }
+
+int count(const bool v[4]) { return int(v[0]) + int(v[1]) + int(v[2]) + int(v[3]); }
+
+// A dimension whose pair was not fully measured: the design infers the missing wall from the
+// one seen (or gives the dimension alone when neither was); otherwise it stays unseen.
+void infer_from_design(const bool measured[4], int a, int b, double design_m, double offsets[4],
+                       DimensionSource& source, double& value, TunnelMap& map) {
+  if (measured[a] && measured[b]) {
+    source = DimensionSource::Measured;
+    value = offsets[a] + offsets[b];
+    return;
+  }
+  if (!(design_m > 0)) return;
+  source = DimensionSource::Design;
+  value = design_m;
+  for (const auto& [seen_wall, missing_wall] : {std::pair{a, b}, std::pair{b, a}}) {
+    if (!measured[seen_wall] || measured[missing_wall]) continue;
+    offsets[missing_wall] = design_m - offsets[seen_wall];
+    map.walls[missing_wall].found = true;
+    map.walls[missing_wall].source = DimensionSource::Design;
+    map.walls[missing_wall].offset_m = offsets[missing_wall];
+  }
+}
+
+}  // namespace
+
+void describe_tunnel_map(TunnelMap& map) {
+  if (map.status == "ok") {
+    set_text(map.reason, "width %.3f m, height %.3f m", map.width_m, map.height_m);
+    return;
+  }
+  map.reason.clear();
+  const std::pair<const char*, DimensionSource> dims[] = {{"width", map.width_source},
+                                                          {"height", map.height_source}};
+  for (const auto& [name, src] : dims) {  // what was not measured: "height from context"
+    if (src == DimensionSource::Measured) continue;
+    if (!map.reason.empty()) map.reason += ", ";
+    if (src == DimensionSource::Unseen)
+      append_text(map.reason, "%s unknown", name);
+    else
+      append_text(map.reason, "%s from %s", name, dimension_source_name(src));
+  }
+}
+
+namespace {
 
 void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const TunnelOptions& opt,
          const TunnelContext* context, TunnelMap& map) {
@@ -163,21 +208,41 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   map.up = rough.up;
   map.axis_dir = rough.forward;
 
-  if (n < 4) {
+  if (n < 2) {
     fail(map, "too_few_planes");
-    set_text(map.reason, "%.0f planes detected, at least 4 needed", double(n));
+    set_text(map.reason, "%.0f planes detected, at least 2 needed", double(n));
     return;
   }
 
-  // Steps 1-2.
-  std::array<Eigen::Vector3d, 4> means;
-  if (!classify_and_reject(planes, rough, opt, map, means)) return;
+  // Steps 1-2. Two walls at least: one or two may be out of view (e.g. the floor near a
+  // manhole plate) and the map is then partial.
+  Eigen::Vector3d means[4];
+  bool seen[4];
+  double support[4];
+  classify_and_reject(planes, rough, opt, map, means, seen, support);
+  // A pair that is not parallel, one of whose walls has far fewer points than the other: the
+  // weak one is taken as not seen (e.g. the floor near a manhole plate, where what is left of
+  // it is a sliver of something else), as long as two walls remain; the map is then partial.
+  // Two well-supported walls that are not parallel stay "no_parallel_pair".
+  for (int a : {0, 2}) {
+    if (!seen[a] || !seen[a + 1] || count(seen) <= 2) continue;
+    if (angle_deg(means[a], -means[a + 1]) <= opt.max_pair_angle_deg) continue;
+    const int weaker = support[a] < support[a + 1] ? a : a + 1;
+    if (support[weaker] > 0.25 * support[weaker ^ 1]) continue;
+    seen[weaker] = false;
+    for (size_t i = 0; i < n; ++i)
+      if (map.plane_classes[i] == static_cast<WallClass>(weaker))
+        map.plane_classes[i] = WallClass::Unassigned;
+  }
+  if (count(seen) < 2) {
+    fail(map, "missing_wall");
+    return;
+  }
 
   // Step 3: rectangular template.
   TemplateFrame& tf = scratch().frame;
-  fit_rectangular_template(means[int(WallClass::Left)], means[int(WallClass::Right)],
-                           means[int(WallClass::Top)], means[int(WallClass::Bottom)], rough.forward,
-                           opt.max_pair_angle_deg, tf);
+  fit_partial_template(means, seen, rough.right, rough.up, rough.forward, opt.max_pair_angle_deg,
+                       tf);
   if (!tf.ok) {
     map.detected = false;
     map.status = tf.status;  // copy-assignments reuse the map's buffers
@@ -188,48 +253,57 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
 
   // Step 4: zone positions with the common wall normal, clustered; outermost supported zone.
   double offsets[4] = {0, 0, 0, 0};
-  std::string& weak = map.reason;  // empty here; only read if a wall has no supported zone
-  weak.clear();
+  bool measured[4] = {false, false, false, false};
+  // Visible span across the tunnel of every classified plane: bounds the rectangles of the
+  // walls that were not measured (they are drawn only where the measured walls were seen).
+  double span[4] = {0, 0, 0, 0};
+  std::string weak;  // walls seen without a supported zone (small: no allocation)
   std::vector<ZonePosition>& positions = scratch().positions;
   double axial_min = std::numeric_limits<double>::infinity();
   double axial_max = -axial_min;
   for (WallClass c : kWalls) {
     const int ci = static_cast<int>(c);
     Wall& w = map.wall(c);
-    w.found = true;
     w.normal = template_normal[ci];
     positions.clear();
     for (size_t i = 0; i < n; ++i) {
       if (map.plane_classes[i] != c) continue;
       const PlaneSegment& p = planes.planes[i];
-      // Planes seen nearly edge-on (the edge-on pass of coarse-to-fine growing) measure no zone:
-      // their normals are the noisiest and they straddle plates a few millimetres apart. With
-      // them, field height sigma rose from 0.15 to 1.2 mm (docs/method.md).
-      if (p.edge_on) continue;
-      positions.push_back({-w.normal.dot(p.centroid), p.points});
-      if (p.contour.empty()) {
-        axial_min = std::min(axial_min, tf.axis.dot(p.centroid));
-        axial_max = std::max(axial_max, tf.axis.dot(p.centroid));
-      }
-      for (const auto& q : p.contour) {
+      const auto extend = [&](const Eigen::Vector3d& q) {
         axial_min = std::min(axial_min, tf.axis.dot(q));
         axial_max = std::max(axial_max, tf.axis.dot(q));
-      }
+        for (int k = 0; k < 4; ++k) span[k] = std::max(span[k], -template_normal[k].dot(q));
+      };
+      // Planes seen nearly edge-on (the edge-on pass of coarse-to-fine growing) measure no zone
+      // and bound no extent: their normals are the noisiest and they straddle plates a few
+      // millimetres apart. With them, field height sigma rose from 0.15 to 1.2 mm
+      // (docs/method.md).
+      if (p.edge_on) continue;
+      if (p.contour.empty()) extend(p.centroid);
+      for (const auto& q : p.contour) extend(q);
+      positions.push_back({-w.normal.dot(p.centroid), p.points});
     }
+    if (!seen[ci]) continue;
     cluster_zone_positions(positions, opt.zone_cluster_m, opt.min_cluster_points, w.clusters);
     const int best = outermost_supported_cluster(w.clusters, opt.min_cluster_points);
     if (best < 0) {
-      w.found = false;
       if (!weak.empty()) weak += "; ";
       append_text(weak, "%s wall: no zone cluster with >= %d points", wall_class_name(c),
                   opt.min_cluster_points);
       continue;
     }
+    measured[ci] = true;
+    w.found = true;
+    w.source = DimensionSource::Measured;
     offsets[ci] = w.clusters[best].offset_m;
     w.offset_m = offsets[ci];
   }
-  if (!weak.empty()) {
+  if (count(measured) < 2) {
     fail(map, "missing_wall");
+    if (!weak.empty()) {
+      if (!map.reason.empty()) map.reason += "; ";
+      map.reason += weak;
+    }
     return;
   }
   if (opt.max_symmetric_step_m > 0) {  // symmetric zone prior, steps first, then applied
@@ -237,51 +311,71 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
     // step of the two perpendicular walls (the rectangular template's other pair).
     const int opposite[4] = {1, 0, 3, 2};
     const int perpendicular[4][2] = {{2, 3}, {2, 3}, {0, 1}, {0, 1}};
-    double seen[4], step[4] = {0, 0, 0, 0};
+    double seen_step[4], step[4] = {0, 0, 0, 0};
     for (WallClass c : kWalls)
-      seen[int(c)] = observed_edge_step(map.wall(c).clusters, opt.min_cluster_points,
-                                        opt.max_symmetric_step_m);
+      seen_step[int(c)] = measured[int(c)] ? observed_edge_step(map.wall(c).clusters,
+                                                                opt.min_cluster_points,
+                                                                opt.max_symmetric_step_m)
+                                           : 0.0;
     for (WallClass c : kWalls) {
       const int ci = int(c);
-      if (!single_supported_zone(map.wall(c).clusters, opt.min_cluster_points)) continue;
-      if (seen[opposite[ci]] > 0) {
-        step[ci] = seen[opposite[ci]];
+      if (!measured[ci] || !single_supported_zone(map.wall(c).clusters, opt.min_cluster_points))
+        continue;
+      if (seen_step[opposite[ci]] > 0) {
+        step[ci] = seen_step[opposite[ci]];
       } else {
-        const double a = seen[perpendicular[ci][0]], b = seen[perpendicular[ci][1]];
+        const double a = seen_step[perpendicular[ci][0]], b = seen_step[perpendicular[ci][1]];
         const int k = (a > 0) + (b > 0);
         step[ci] = k ? (a + b) / k : 0.0;
       }
     }
     for (WallClass c : kWalls) {
+      if (!measured[int(c)]) continue;
       offsets[int(c)] += step[int(c)];
       map.wall(c).offset_m = offsets[int(c)];
       map.wall(c).symmetric_step_m = step[int(c)];
     }
   }
-  const WallOffsets off{offsets[int(WallClass::Left)], offsets[int(WallClass::Right)],
-                        offsets[int(WallClass::Top)], offsets[int(WallClass::Bottom)]};
-  map.width_m = off.left + off.right;
-  map.height_m = off.top + off.bottom;
+  infer_from_design(measured, 0, 1, opt.design_width_m, offsets, map.width_source, map.width_m, map);
+  infer_from_design(measured, 2, 3, opt.design_height_m, offsets, map.height_source, map.height_m,
+                    map);
+  if (map.width_source == DimensionSource::Unseen && map.height_source == DimensionSource::Unseen) {
+    fail(map, "missing_wall");
+    set_text(map.reason, "neither the width nor the height was measured (walls seen: %s%s%s%s)",
+             measured[0] ? "left " : "", measured[1] ? "right " : "", measured[2] ? "top " : "",
+             measured[3] ? "bottom" : "");
+    return;
+  }
 
-  // Step 6 (done before the checks so a rejected map can still be inspected).
+  // Step 6 (done before the checks so a rejected map can still be inspected). Walls neither
+  // measured nor inferred bound the drawing at the visible span and are not part of the map.
+  double draw[4];
+  for (int k = 0; k < 4; ++k) draw[k] = map.walls[k].found ? offsets[k] : span[k];
+  const WallOffsets off{draw[0], draw[1], draw[2], draw[3]};
   build_wall_geometry(tf, off, axial_min, axial_max, opt.forbidden_band_m, map);
+  for (Wall& w : map.walls)
+    if (!w.found) w.zones.clear();  // offset_m keeps the drawn span (rebuild_wall_geometry)
 
   // Step 5: template prior and context of earlier scans.
-  if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m) {
-    fail(map, "out_of_template");
-    set_text(map.reason, "width %.3f m outside [%.2f, %.2f]", map.width_m, opt.width_min_m,
-             opt.width_max_m);
-    return;
+  if (map.width_source == DimensionSource::Measured) {
+    if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m) {
+      fail(map, "out_of_template");
+      set_text(map.reason, "width %.3f m outside [%.2f, %.2f]", map.width_m, opt.width_min_m,
+               opt.width_max_m);
+      return;
+    }
   }
-  if (map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
-    fail(map, "out_of_template");
-    set_text(map.reason, "height %.3f m outside [%.2f, %.2f]", map.height_m, opt.height_min_m,
-             opt.height_max_m);
-    return;
+  if (map.height_source == DimensionSource::Measured) {
+    if (map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
+      fail(map, "out_of_template");
+      set_text(map.reason, "height %.3f m outside [%.2f, %.2f]", map.height_m, opt.height_min_m,
+               opt.height_max_m);
+      return;
+    }
   }
   map.detected = true;
-  map.status = "ok";
-  set_text(map.reason, "width %.3f m, height %.3f m", map.width_m, map.height_m);
+  map.status = count(measured) == 4 ? "ok" : "partial";
+  describe_tunnel_map(map);
   if (context) apply_tunnel_context(map, opt, *context);
 }
 
@@ -306,9 +400,11 @@ void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera
 }
 
 void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const TunnelContext& context) {
-  if (!map.detected || context.empty()) return;
-  const double dw = map.width_m - context.width_m();
-  const double dh = map.height_m - context.height_m();
+  if (!map.detected) return;
+  // Only what this frame measured is checked: an inferred value agrees by construction.
+  const double dw = map.width_measured() && context.has_width() ? map.width_m - context.width_m() : 0.0;
+  const double dh =
+      map.height_measured() && context.has_height() ? map.height_m - context.height_m() : 0.0;
   if (std::abs(dw) > opt.context_tolerance_m) {
     fail(map, "inconsistent_with_context");
     set_text(map.reason, "width %.3f m differs from the context's %.3f m by more than %.0f mm",

@@ -23,25 +23,35 @@ struct TunnelOptions {
   // Symmetric zone prior (zone_clustering.h): a wall seen only by its middle plate borrows the
   // opposite wall's edge-to-middle step, up to this size (0 = off).
   double max_symmetric_step_m = 0.03;
+  // Design prior (0 = none): infers a wall out of view from the opposite wall, or gives the
+  // dimension itself when neither wall of the pair was measured.
+  double design_width_m = 0.0, design_height_m = 0.0;
 };
 
-// Context of previous scans in a sequence: accepted widths/heights. A new frame must agree with
-// it within context_tolerance_m.
+// Context of previous scans in a sequence without poses: the widths and heights earlier frames
+// measured. A new frame's measured dimensions must agree with it within context_tolerance_m.
+// (Posed sequences use the station map along the tunnel instead: core/mapping.)
 class TunnelContext {
  public:
-  // The context is the last kWindow accepted scans: bounded memory and time per frame on
-  // hours-long streams (the robot moves on; old scans say least about the tunnel here).
+  // The context is the last kWindow measurements of each dimension: bounded memory and time per
+  // frame on hours-long streams (the robot moves on; old scans say least about the tunnel here).
   static constexpr std::size_t kWindow = 1000;
 
-  void accept(const TunnelMap& map);
-  bool empty() const { return widths_.empty(); }
-  double width_m() const;   // median of accepted widths
+  void accept(const TunnelMap& map);  // takes the dimensions the map measured
+  bool empty() const { return width_.values.empty() && height_.values.empty(); }
+  bool has_width() const { return !width_.values.empty(); }
+  bool has_height() const { return !height_.values.empty(); }
+  double width_m() const;   // median of accepted widths (0 when none)
   double height_m() const;  // median of accepted heights
-  void clear() { widths_.clear(), heights_.clear(), next_ = 0; }
+  void clear() { width_ = Ring(), height_ = Ring(); }
 
  private:
-  std::vector<double> widths_, heights_;  // ring buffers once kWindow scans were accepted
-  std::size_t next_ = 0;                  // slot the next scan replaces when full
+  struct Ring {
+    std::vector<double> values;  // a ring buffer once kWindow values were accepted
+    std::size_t next = 0;        // slot the next value replaces when full
+    void push(double v);
+  };
+  Ring width_, height_;
 };
 
 // `up_camera`: unit vector towards the roof, in the camera frame. Everything in the returned map
@@ -59,6 +69,10 @@ void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera
 // "inconsistent_with_context"; anything else is left unchanged. detect_tunnel(..., context)
 // equals detect_tunnel(..., nullptr) followed by this, which lets a sequence detect frames in
 // parallel and apply the order-dependent context in frame order (core/pipeline/sequence_runner.h).
+// map.reason for a detected map from its sources: "width 0.820 m, height 1.300 m" when both
+// were measured, else what was not, e.g. "height from context" or "height unknown".
+void describe_tunnel_map(TunnelMap& map);
+
 void apply_tunnel_context(TunnelMap& map, const TunnelOptions& options, const TunnelContext& context);
 
 }  // namespace tunnelmap

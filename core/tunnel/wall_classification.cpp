@@ -17,6 +17,16 @@ const char* wall_class_name(WallClass c) {
   return "unassigned";
 }
 
+const char* dimension_source_name(DimensionSource s) {
+  switch (s) {
+    case DimensionSource::Measured: return "measured";
+    case DimensionSource::Context: return "context";
+    case DimensionSource::Design: return "design";
+    case DimensionSource::Unseen: return "unseen";
+  }
+  return "unseen";
+}
+
 RoughTunnelFrame make_rough_frame(const Eigen::Vector3d& up_in) {
   RoughTunnelFrame f;
   f.up = up_in.normalized();

@@ -63,4 +63,19 @@ void build_wall_geometry(const TemplateFrame& frame, const WallOffsets& off, dou
   }
 }
 
+void rebuild_wall_geometry(TunnelMap& map, double band) {
+  TemplateFrame tf;
+  tf.ok = true;
+  tf.axis = map.axis_dir;
+  tf.up = map.up;
+  tf.right = map.axis_dir.cross(map.up);  // axis = up x right
+  const double axial_min = tf.axis.dot(map.axis_point);
+  const double axial_max = axial_min + (map.extent_max_m - map.extent_min_m);
+  const WallOffsets off{map.walls[0].offset_m, map.walls[1].offset_m, map.walls[2].offset_m,
+                        map.walls[3].offset_m};
+  build_wall_geometry(tf, off, axial_min, axial_max, band, map);
+  for (Wall& w : map.walls)
+    if (!w.found) w.zones.clear();
+}
+
 }  // namespace tunnelmap

@@ -20,6 +20,10 @@ struct WallOffsets {
 void build_wall_geometry(const TemplateFrame& frame, const WallOffsets& offsets, double axial_min,
                          double axial_max, double forbidden_band_m, TunnelMap& map);
 
+// build_wall_geometry again from what the map holds (its frame, extent and every wall's
+// offset_m), after a wall was inferred. Walls that are not found get no zones.
+void rebuild_wall_geometry(TunnelMap& map, double forbidden_band_m);
+
 // A rectangle on a wall: `edge_a`/`edge_b` are the wall's two cross-section end points (at
 // axial position 0), `n` the wall's inward normal. Corners are counter-clockwise seen from
 // inside the tunnel (their right-hand normal is +n), starting at the lower across-coordinate

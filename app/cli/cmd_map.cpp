@@ -1,0 +1,217 @@
+// `tunnelmap-cli map DATASET`: the whole tunnel as a station profile along its axis, in the world
+// frame of the dataset's poses (explicit, else forward kinematics): width and height per station,
+// sections of constant cross-section, deviation from the design, poses to rescan; as JSON, CSV,
+// a sectioned PLY map and a PDF inspection report.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "app/cli/commands.h"
+#include "app/cli/input_options.h"
+#include "core/export/map_ply.h"
+#include "core/fusion/fusion_options.h"
+#include "core/io/dataset.h"
+#include "core/kinematics/frame_pose.h"
+#include "core/mapping/station_map_builder.h"
+#include "core/report/results_json.h"
+#include "core/report/station_map_json.h"
+#include "core/util/atomic_file.h"
+#include "core/util/error.h"
+#ifdef TUNNELMAP_HAVE_REPORT
+#include "app/cli/map_image.h"
+#include "ui/report/inspection_report.h"
+#endif
+
+namespace tunnelmap::cli {
+
+namespace {
+
+struct MapOptions {
+  InputOptions in;
+  std::optional<double> station_step, tolerance_mm;
+  std::string design;  // "WxH"
+  std::string json_path, csv_path, ply_path, report_path;
+  bool quiet = false;
+};
+
+// "0.82x1.30" -> width, height (metres).
+std::pair<double, double> parse_design(const std::string& text) {
+  const auto x = text.find_first_of("xX");
+  double w = 0, h = 0;
+  std::size_t used_w = 0, used_h = 0;
+  try {
+    if (x != std::string::npos) {
+      w = std::stod(text.substr(0, x), &used_w);
+      h = std::stod(text.substr(x + 1), &used_h);
+    }
+  } catch (...) {
+    used_w = used_h = 0;
+  }
+  if (x == std::string::npos || used_w != x || used_h != text.size() - x - 1 || !(w > 0) || !(h > 0))
+    throw ParameterError("--design expects WIDTHxHEIGHT in metres, e.g. 0.82x1.30, got '" + text + "'");
+  return {w, h};
+}
+
+Parameters map_parameters(const MapOptions& o) {
+  Parameters p = o.in.parameters();
+  // The flags are parameter-table keys (presets may carry a design): range checks included.
+  if (o.station_step) p.set("map.station_step_m", *o.station_step);
+  if (o.tolerance_mm) p.set("map.tolerance_mm", *o.tolerance_mm);
+  if (!o.design.empty()) {
+    const auto [w, h] = parse_design(o.design);
+    p.set("tunnel.design_width_m", w);
+    p.set("tunnel.design_height_m", h);
+  }
+  return p;
+}
+
+std::string now_text() {
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&t));
+  return buf;
+}
+
+void print_summary(const StationMap& m, double detect_ms, double map_ms, int frames) {
+  std::printf("map: %zu stations of %.2f m over %.2f m, %zu section(s), %d of %d frames used\n",
+              m.stations.size(), m.options.station_step_m,
+              m.sections.empty() ? 0.0 : m.sections.back().to_m - m.sections.front().from_m,
+              m.sections.size(), m.frames_used, m.frames);
+  for (std::size_t i = 0; i < m.sections.size(); ++i) {
+    const Section& s = m.sections[i];
+    std::printf("section %zu: %.2f to %.2f m, width %.4f m, height %.4f m, %d frames\n", i + 1,
+                s.from_m, s.to_m, s.width_m, s.height_m, s.frames);
+  }
+  const auto off = m.out_of_tolerance();
+  if (m.options.design_width_m || m.options.design_height_m)
+    std::printf("design %.3f x %.3f m, tolerance %.1f mm: %zu station(s) out of tolerance\n",
+                m.options.design_width_m.value_or(NAN), m.options.design_height_m.value_or(NAN),
+                m.options.tolerance_mm, off.size());
+  for (const PoseGroupStatus& p : m.poses)
+    if (p.rescan)
+      std::printf("pose %d (frames %d-%d): %s\n", p.group, p.frames.front(), p.frames.back(),
+                  p.message.c_str());
+  std::printf("time: detection %.1f ms/frame, map %.2f ms/frame\n",
+              frames ? detect_ms / frames : 0.0, frames ? map_ms / frames : 0.0);
+}
+
+#ifdef TUNNELMAP_HAVE_REPORT
+void write_report(const MapOptions& o, const StationMap& m, const nlohmann::json& params) {
+  InspectionReportInput in;
+  in.input = o.in.input;
+  in.created = now_text();
+  in.params = params;
+  in.map = &m;
+  // The 3D image comes from the map PLY through the headless renderer.
+  const std::filesystem::path tmp =
+      std::filesystem::temp_directory_path() / ("tunnelmap-report-" + std::to_string(getpid()));
+  std::filesystem::create_directories(tmp);
+  const std::string ply = o.ply_path.empty() ? (tmp / "map.ply").string() : o.ply_path;
+  const std::string png = (tmp / "map.png").string();
+  std::string why;
+  if (!m.section_maps.empty()) {
+    if (o.ply_path.empty()) write_sectioned_map_ply(ply, m.section_maps, params);
+    if (render_map_image(ply, png, why)) in.map_image_png = png;
+  } else {
+    why = "the map has no section";
+  }
+  in.map_image_note = why;
+  try {
+    write_inspection_report(o.report_path, in);
+  } catch (...) {
+    std::filesystem::remove_all(tmp);
+    throw;
+  }
+  std::filesystem::remove_all(tmp);
+}
+#endif
+
+void run(const MapOptions& o, CliContext& ctx) {
+  const Parameters params = map_parameters(o);
+  Pipeline pipeline = o.in.pipeline();
+  pipeline.set_params(params);
+  const Dataset ds = read_dataset(o.in.input);
+#ifndef TUNNELMAP_HAVE_REPORT
+  if (!o.report_path.empty())
+    throw ParameterError("--report needs the Qt build of tunnelmap (configure with -DTUNNELMAP_BUILD_GUI=ON)");
+#endif
+  for (const std::string& p : {o.json_path, o.csv_path, o.ply_path, o.report_path})
+    if (!p.empty()) check_output_path(p);  // fail now, not after the work
+  const int n = static_cast<int>(ds.frames.size());
+  if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
+  std::vector<Eigen::Isometry3d> poses;
+  for (int i = 0; i < n; ++i) {
+    const ResolvedPose rp = resolve_frame_pose(ds, static_cast<std::size_t>(i));
+    if (!rp.pose)
+      throw InputError(ds.json_path, "frames[" + std::to_string(i) +
+                                         "] has neither \"pose\" nor \"joints\": the map needs "
+                                         "every camera pose");
+    poses.push_back(*rp.pose);
+  }
+  pipeline.set_world_up(ds.up);
+
+  StationMapBuilder builder(station_map_options(params), tunnel_options(params));
+  nlohmann::json frames = nlohmann::json::array();
+  Progress progress(static_cast<std::size_t>(n));
+  double detect_ms = 0.0, map_ms = 0.0;
+  FrameResult result;
+  for (int i = 0; i < n; ++i) {
+    DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
+    f.pose = poses[static_cast<std::size_t>(i)];  // the world frame for up and for the map
+    pipeline.run(f, result);
+    detect_ms += result.timings_ms.at("total");
+    builder.add_frame(i, result, poses[static_cast<std::size_t>(i)]);
+    map_ms += builder.last_frame_ms();
+    frames.push_back(detection_frame_json(static_cast<std::size_t>(i), f.source, result));
+    progress.step(static_cast<std::size_t>(i + 1));
+  }
+  const std::vector<int> groups = group_poses(poses, fusion_options(params).pose_group_m);
+  StationMap m = builder.finish(groups);
+  map_ms += m.timings_ms["map"];
+  m.timings_ms["map"] = map_ms;
+
+  const nlohmann::json pj = params.to_json();
+  if (!o.quiet) print_summary(m, detect_ms, map_ms, n);
+  if (!m.ok && (!o.ply_path.empty() || !o.report_path.empty()))
+    throw InputError(o.in.input, "no map to write: " + m.reason);
+  if (!o.json_path.empty())
+    write_file_atomically(o.json_path, [&](std::ostream& out) {
+      out << station_map_document(m, pj, frames, o.in.input).dump(2) << "\n";
+    });
+  if (!o.csv_path.empty())
+    write_file_atomically(o.csv_path, [&](std::ostream& out) { out << station_map_csv(m); });
+  if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj);
+#ifdef TUNNELMAP_HAVE_REPORT
+  if (!o.report_path.empty()) write_report(o, m, pj);
+#endif
+  ctx.exit_code = 0;
+}
+
+}  // namespace
+
+void add_map_command(CLI::App& app, CliContext& ctx) {
+  auto o = std::make_shared<MapOptions>();
+  auto* cmd = app.add_subcommand(
+      "map", "Map the whole tunnel from a posed dataset: stations, sections, deviation from the design");
+  add_input_options(cmd, o->in);
+  cmd->add_option("--station-step", o->station_step,
+                  "Distance between stations along the axis in metres (default 0.10; map.station_step_m)");
+  cmd->add_option("--design", o->design,
+                  "Design cross-section WIDTHxHEIGHT in metres (tunnel.design_width_m/height_m)");
+  cmd->add_option("--tolerance-mm", o->tolerance_mm,
+                  "Allowed deviation from the design in mm (default 10; map.tolerance_mm)");
+  cmd->add_option("--json", o->json_path, "Write the station map as JSON");
+  cmd->add_option("--csv", o->csv_path, "Write one row per station as CSV");
+  cmd->add_option("--ply", o->ply_path, "Write the sectioned map as a binary PLY mesh (world frame)");
+  cmd->add_option("--report", o->report_path, "Write the inspection report as PDF");
+  cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");
+  cmd->callback([o, &ctx] { run(*o, ctx); });
+}
+
+}  // namespace tunnelmap::cli

@@ -1,0 +1,74 @@
+#pragma once
+// StationMap: the whole tunnel as a profile along its axis. Every posed frame's wall points are
+// binned by station (distance along the axis) in the world frame; each station gets the width
+// and height its points measure, or, where a wall was out of view, the value the neighbouring
+// stations (the sequence's context) or the design give. Stations that agree form sections of
+// constant cross-section; a change several frames agree on starts a new section. See
+// docs/tunnel-map.md.
+#include <Eigen/Geometry>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/mapping/multi_scan_map.h"
+#include "core/tunnel/tunnel_map.h"
+#include "core/util/stage_timer.h"
+
+namespace tunnelmap {
+
+struct StationMapOptions {
+  double station_step_m = 0.10;
+  std::optional<double> design_width_m, design_height_m;  // the design cross-section, if known
+  double tolerance_mm = 10.0;      // |deviation| above this is out of tolerance
+  double section_change_mm = 12.0; // stations differing by more than this start a new section
+  int min_section_stations = 3;    // a shorter run is an outlier, not a section
+  double zone_gap_m = 0.010;       // wall positions closer than this are one zone
+  double max_symmetric_step_m = 0.03;
+  int min_support_points = 60;     // fewest wall points a station needs to measure a wall
+};
+
+struct Station {
+  double station_m = 0.0;          // centre of the station's bin along the axis
+  double width_m = 0.0, height_m = 0.0;  // meaningful when the source is not Unseen
+  DimensionSource width_source = DimensionSource::Unseen;
+  DimensionSource height_source = DimensionSource::Unseen;
+  int frames = 0;                  // frames whose points measured this station
+  std::optional<double> width_dev_mm, height_dev_mm;  // against the design
+  bool out_of_tolerance = false;
+  // Wall positions: distance from the map's centre line to each wall's outermost surface
+  // (left, right, top, bottom); NaN where the wall was not measured here.
+  double wall_m[4] = {NAN, NAN, NAN, NAN};
+};
+
+// A stretch of constant cross-section.
+struct Section {
+  double from_m = 0.0, to_m = 0.0;
+  double width_m = 0.0, height_m = 0.0;
+  int frames = 0;  // frames that measured any of its stations
+};
+
+struct StationMap {
+  bool ok = false;
+  std::string status;  // "ok", "no_poses", "no_detection"
+  std::string reason;
+  // World frame. Station s is at origin + s * axis; `up` is perpendicular to `axis`; the
+  // centre line passes through origin (cross-section centre of the first measured station).
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  StationMapOptions options;
+  std::vector<Station> stations;   // over the observed extent, in order
+  std::vector<Section> sections;   // in order along the axis
+  std::vector<PoseGroupStatus> poses;
+  std::vector<TunnelMap> section_maps;  // one world-frame map (walls, zones) per section
+  int frames = 0, frames_used = 0;
+  StageTimings timings_ms;         // "map" (total), per frame: see frame_ms
+
+  // Stations out of tolerance (convenience for reports).
+  std::vector<const Station*> out_of_tolerance() const;
+  // Station of a world point (its projection on the axis).
+  double station_of(const Eigen::Vector3d& world) const { return axis.dot(world - origin); }
+};
+
+}  // namespace tunnelmap

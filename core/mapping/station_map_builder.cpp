@@ -1,0 +1,521 @@
+#include "core/mapping/station_map_builder.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <unordered_map>
+
+#include "core/mapping/station_sections.h"
+#include "core/tunnel/tunnel_detector.h"
+#include "core/tunnel/wall_geometry.h"
+#include "core/tunnel/zone_clustering.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double median(std::vector<double> v) {
+  if (v.empty()) return kNaN;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Outward directions of the four walls (left, right, top, bottom) in the world frame.
+void outward(const Eigen::Vector3d& axis, const Eigen::Vector3d& up, Eigen::Vector3d out[4]) {
+  const Eigen::Vector3d left = up.cross(axis);
+  out[0] = left;
+  out[1] = -left;
+  out[2] = up;
+  out[3] = -up;
+}
+
+}  // namespace
+
+StationMapOptions station_map_options(const Parameters& p) {
+  StationMapOptions o;
+  o.station_step_m = p.get("map.station_step_m");
+  if (p.get("tunnel.design_width_m") > 0) o.design_width_m = p.get("tunnel.design_width_m");
+  if (p.get("tunnel.design_height_m") > 0) o.design_height_m = p.get("tunnel.design_height_m");
+  o.tolerance_mm = p.get("map.tolerance_mm");
+  o.section_change_mm = p.get("map.section_change_mm");
+  o.min_section_stations =
+      std::max(1, static_cast<int>(std::lround(p.get("map.min_section_m") / o.station_step_m)));
+  o.zone_gap_m = p.get("tunnel.zone_cluster_mm") / 1000.0;
+  o.max_symmetric_step_m = p.get("tunnel.symmetric_step_max_mm") / 1000.0;
+  o.min_support_points = p.get_int("map.min_station_points");
+  return o;
+}
+
+StationMapBuilder::StationMapBuilder(StationMapOptions options, TunnelOptions tunnel)
+    : options_(std::move(options)), tunnel_(tunnel) {}
+
+bool StationMapBuilder::ensure_frame(const TunnelMap& map, const Eigen::Isometry3d& T) {
+  if (!have_origin_) {
+    // Station 0: the first frame's camera centre, positive in its viewing direction.
+    origin_ = T.translation();
+    first_view_ = T.linear().col(2);
+    have_origin_ = true;
+  }
+  if (have_frame_) return true;
+  if (!map.detected) return false;
+  // The axis and up of the first detected frame, in the world frame; both are unit and
+  // perpendicular (the template fit makes them so).
+  axis_ = (T.linear() * map.axis_dir).normalized();
+  if (axis_.dot(first_view_) < 0) axis_ = -axis_;
+  up_ = T.linear() * map.up;
+  up_ = (up_ - axis_ * axis_.dot(up_)).normalized();
+  have_frame_ = true;
+  return true;
+}
+
+void StationMapBuilder::frame_pieces(const FrameResult& r, const Eigen::Isometry3d& T, int frame,
+                                     Pieces& out) const {
+  out.clear();
+  const TunnelMap& m = r.map;
+  const PlaneSegments& ps = r.planes;
+  if (ps.labels.empty() || r.cloud.points.size() != ps.labels.size()) return;
+  // Label -> wall class (or -1) of the planes that measure a wall in this frame.
+  std::unordered_map<int, int> wall_of;
+  for (std::size_t i = 0; i < ps.planes.size() && i < m.plane_classes.size(); ++i) {
+    const WallClass c = m.plane_classes[i];
+    if (c == WallClass::Unassigned || ps.planes[i].edge_on) continue;
+    if (!m.wall(c).found || m.wall(c).source != DimensionSource::Measured) continue;
+    wall_of[ps.planes[i].id] = static_cast<int>(c);
+  }
+  if (wall_of.empty()) return;
+  Eigen::Vector3d dir[4];
+  outward(axis_, up_, dir);
+  const Eigen::Matrix3f R = T.linear().cast<float>();
+  const Eigen::Vector3f t = (T.translation() - origin_).cast<float>();
+  const Eigen::Vector3f a = axis_.cast<float>();
+  Eigen::Vector3f d[4], own[4];
+  for (int k = 0; k < 4; ++k) {
+    d[k] = dir[k].cast<float>();
+    own[k] = (-(T.linear() * m.walls[k].normal)).normalized().cast<float>();  // inward -> outward
+  }
+  const float inv_step = static_cast<float>(1.0 / options_.station_step_m);
+  // (station, plane) -> sums; a plane has one wall.
+  struct Sum {
+    double position = 0, own_position = 0;
+    int points = 0;
+    int wall = 0;
+  };
+  std::unordered_map<long long, Sum> sums;
+  for (std::size_t i = 0; i < ps.labels.size(); ++i) {
+    const int label = ps.labels[i];
+    if (label <= 0) continue;
+    const auto it = wall_of.find(label);
+    if (it == wall_of.end()) continue;
+    const Eigen::Vector3f& pc = r.cloud.points[i];
+    if (!OrganizedCloud::valid(pc)) continue;
+    const Eigen::Vector3f p = R * pc + t;
+    const int station = static_cast<int>(std::floor(a.dot(p) * inv_step));
+    Sum& s = sums[(static_cast<long long>(station) << 20) ^ label];
+    s.position += d[it->second].dot(p);
+    s.own_position += own[it->second].dot(p);
+    ++s.points;
+    s.wall = it->second;
+  }
+  for (const auto& [key, s] : sums) {
+    const int station = static_cast<int>(key >> 20);
+    out[station].push_back(
+        {station, s.wall, frame, s.points, s.position / s.points, s.own_position / s.points});
+  }
+}
+
+std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pieces& pieces,
+                                                                       int k0, int k1,
+                                                                       bool own) const {
+  std::vector<WallProfile> out(static_cast<std::size_t>(std::max(0, k1 - k0 + 1)));
+  for (WallProfile& w : out) {
+    std::fill(std::begin(w.wall_m), std::end(w.wall_m), kNaN);
+    w.frames = 0;
+  }
+  if (out.empty()) return out;
+  // Per station and wall: zone clusters of the pieces, outermost supported one; a wall whose
+  // only supported cluster is its middle plate gets the edge step seen elsewhere (the symmetric
+  // zone prior of single frames, applied along the tunnel).
+  std::vector<std::vector<double>> steps(4);
+  std::vector<std::array<std::vector<ZoneCluster>, 4>> clusters(out.size());
+  std::vector<ZonePosition> positions;
+  std::vector<int> frames;
+  for (auto it = pieces.lower_bound(k0); it != pieces.end() && it->first <= k1; ++it) {
+    const int k = it->first;
+    const std::vector<Piece>& here = it->second;
+    WallProfile& wp = out[static_cast<std::size_t>(k - k0)];
+    frames.clear();
+    for (const Piece& p : here) frames.push_back(p.frame);
+    std::sort(frames.begin(), frames.end());
+    wp.frames = static_cast<int>(std::unique(frames.begin(), frames.end()) - frames.begin());
+    for (int c = 0; c < 4; ++c) {
+      positions.clear();
+      for (const Piece& p : here)
+        if (p.wall == c) positions.push_back({own ? p.own_position_m : p.position_m, p.points});
+      if (positions.empty()) continue;
+      auto& cl = clusters[static_cast<std::size_t>(k - k0)][c];
+      cluster_zone_positions(positions, options_.zone_gap_m, options_.min_support_points, cl);
+      const int best = outermost_supported_cluster(cl, options_.min_support_points);
+      if (best < 0) continue;
+      wp.wall_m[c] = cl[best].offset_m;
+      const double step =
+          observed_edge_step(cl, options_.min_support_points, options_.max_symmetric_step_m);
+      if (step > 0) steps[c].push_back(step);
+    }
+  }
+  if (options_.max_symmetric_step_m <= 0) return out;
+  double step[4];
+  for (int c = 0; c < 4; ++c) step[c] = median(steps[c]);
+  const int opposite[4] = {1, 0, 3, 2};
+  for (std::size_t k = 0; k < out.size(); ++k)
+    for (int c = 0; c < 4; ++c) {
+      if (std::isnan(out[k].wall_m[c])) continue;
+      if (!single_supported_zone(clusters[k][c], options_.min_support_points)) continue;
+      const double s = !std::isnan(step[c]) ? step[c] : step[opposite[c]];
+      if (std::isnan(s)) continue;
+      // Edge band or middle plate? The neighbours that saw both tell; alone, the larger
+      // middle plate is the one seen (as in single frames).
+      double nearest = kNaN;
+      for (int d = 1; d <= 5 && std::isnan(nearest); ++d)
+        for (const int kk : {static_cast<int>(k) - d, static_cast<int>(k) + d}) {
+          if (kk < 0 || kk >= static_cast<int>(out.size())) continue;
+          if (observed_edge_step(clusters[kk][c], options_.min_support_points,
+                                 options_.max_symmetric_step_m) > 0)
+            nearest = clusters[kk][c][outermost_supported_cluster(clusters[kk][c],
+                                                                  options_.min_support_points)]
+                          .offset_m;
+        }
+      if (!std::isnan(nearest) && std::abs(out[k].wall_m[c] - nearest) < 0.5 * s) continue;
+      out[k].wall_m[c] += s;
+    }
+  return out;
+}
+
+void StationMapBuilder::own_parts(TunnelMap& m, const Pieces& own, int camera_station) const {
+  const int f0 = own.begin()->first, f1 = own.rbegin()->first;
+  const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+  std::vector<double> w(mine.size()), h(mine.size());
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    w[k] = mine[k].wall_m[0] + mine[k].wall_m[1];
+    h[k] = mine[k].wall_m[2] + mine[k].wall_m[3];
+  }
+  const SectionSplit split = split_sections(w, h, options_.section_change_mm / 1000.0,
+                                            options_.min_section_stations);
+  const double step = options_.station_step_m;
+  m.parts.clear();
+  for (const SectionRun& run : split.sections)
+    m.parts.push_back({(f0 + run.first) * step, (f0 + run.last + 1) * step, run.width_m, run.height_m});
+  // Nearest the camera first: the frame's values are those of the nearest part that has them.
+  const double cam = (camera_station + 0.5) * step;
+  std::vector<const TunnelPart*> order;
+  for (const TunnelPart& p : m.parts) order.push_back(&p);
+  std::stable_sort(order.begin(), order.end(), [&](const TunnelPart* a, const TunnelPart* b) {
+    const auto gap = [&](const TunnelPart* p) { return std::max({0.0, p->from_m - cam, cam - p->to_m}); };
+    return gap(a) < gap(b);
+  });
+  bool changed = false;
+  for (int a : {0, 2}) {
+    if ((a == 0 ? m.width_source : m.height_source) != DimensionSource::Measured) continue;
+    for (const TunnelPart* p : order) {
+      const double v = a == 0 ? p->width_m : p->height_m;
+      if (std::isnan(v)) continue;
+      double& value = a == 0 ? m.width_m : m.height_m;
+      // Both walls move by half the change, so the drawn map keeps its centre line.
+      const double d = 0.5 * (v - value);
+      m.walls[a].offset_m += d;
+      m.walls[a + 1].offset_m += d;
+      value = v;
+      changed = true;
+      break;
+    }
+  }
+  if (changed) {
+    rebuild_wall_geometry(m, tunnel_.forbidden_band_m);
+    if (m.status == "ok") describe_tunnel_map(m);
+  }
+}
+
+void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
+                                      const Eigen::Isometry3d& T) const {
+  const int camera_station = static_cast<int>(
+      std::floor(axis_.dot(T.translation() - origin_) / options_.station_step_m));
+  if (!own.empty()) own_parts(m, own, camera_station);
+  if (pieces_.empty()) return;
+  // The map around the stations this frame sees (a window keeps the cost per frame flat as the
+  // map grows); the whole map only when the window holds no value to infer from.
+  const int margin = 5;
+  int k0 = own.empty() ? camera_station : own.begin()->first - margin;
+  int k1 = own.empty() ? camera_station + static_cast<int>(std::ceil(3.0 / options_.station_step_m))
+                       : own.rbegin()->first + margin;
+  std::vector<WallProfile> map = profile(pieces_, k0, k1);
+  const auto at = [&](int k) -> const WallProfile* {
+    return k < k0 || k > k1 ? nullptr : &map[static_cast<std::size_t>(k - k0)];
+  };
+  const auto dim = [](const WallProfile& w, int a) { return w.wall_m[a] + w.wall_m[a + 1]; };
+
+  // Compared with the map at the stations it sees: a frame that disagrees, where at least two
+  // earlier frames measured, at most of them is an outlier. Stations new to the map are not
+  // compared, so a change of section is taken once frames see it.
+  if (!own.empty()) {
+    const int f0 = own.begin()->first, f1 = own.rbegin()->first;
+    const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+    int compared = 0, disagree = 0;
+    double worst = 0.0;
+    int worst_pair = 0;
+    for (int k = f0; k <= f1; ++k) {
+      const WallProfile* w = at(k);
+      if (!w || w->frames < 2) continue;
+      const WallProfile& f = mine[static_cast<std::size_t>(k - f0)];
+      for (int a : {0, 2}) {
+        const double d = dim(f, a) - dim(*w, a);
+        if (std::isnan(d)) continue;
+        ++compared;
+        if (std::abs(d) > tunnel_.context_tolerance_m) ++disagree;
+        if (std::abs(d) > std::abs(worst)) worst = d, worst_pair = a;
+      }
+    }
+    if (compared >= 3 && 2 * disagree > compared) {
+      m.detected = false;
+      m.status = "inconsistent_with_context";
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "%s differs from the map at %d of %d stations it sees (by up to %.0f mm, "
+                    "tolerance %.0f mm)",
+                    worst_pair == 0 ? "width" : "height", disagree, compared, worst * 1000.0,
+                    tunnel_.context_tolerance_m * 1000.0);
+      m.reason = buf;
+      return;
+    }
+  }
+
+  // Missing walls from the map in the world frame: the missing wall's position there (at the
+  // stations the frame sees, else at the nearest station that has one) with the frame's own
+  // position of the wall opposite; when the frame saw neither, the map's dimension.
+  int f0 = 0, f1 = 0;
+  if (!own.empty()) {
+    f0 = own.begin()->first;
+    f1 = own.rbegin()->first;
+  } else {  // nothing measured: the stations in front of the camera
+    f0 = camera_station;
+    f1 = camera_station + static_cast<int>(std::ceil(2.0 / options_.station_step_m));
+  }
+  const std::vector<WallProfile> mine = own.empty() ? std::vector<WallProfile>() : profile(own, f0, f1);
+  const auto own_position = [&](int c) {
+    std::vector<double> v;
+    for (const WallProfile& w : mine)
+      if (!std::isnan(w.wall_m[c])) v.push_back(w.wall_m[c]);
+    return median(v);
+  };
+  // Median of `value(k)` over the frame's stations, else over the nearest stations with one.
+  const auto from_map = [&](const auto& value, bool expand) {
+    std::vector<double> values;
+    for (int k = f0; k <= f1; ++k)
+      if (const WallProfile* w = at(k); w && !std::isnan(value(*w))) values.push_back(value(*w));
+    if (!expand) return median(values);
+    if (values.empty() && (k0 > pieces_.begin()->first || k1 < pieces_.rbegin()->first)) {
+      k0 = pieces_.begin()->first;
+      k1 = pieces_.rbegin()->first;
+      map = profile(pieces_, k0, k1);
+    }
+    for (int d = 1; values.empty() && d <= k1 - k0 + (f1 - f0); ++d)
+      for (const int k : {f0 - d, f1 + d})
+        if (const WallProfile* w = at(k); w && !std::isnan(value(*w))) values.push_back(value(*w));
+    return median(values);
+  };
+  bool changed = false;
+  for (int a : {0, 2}) {
+    DimensionSource& source = a == 0 ? m.width_source : m.height_source;
+    double& dim_value = a == 0 ? m.width_m : m.height_m;
+    if (source == DimensionSource::Measured) continue;
+    int seen = -1;
+    for (int c : {a, a + 1})
+      if (m.walls[c].source == DimensionSource::Measured) seen = c;
+    // The map's dimension where the frame looks is the best evidence (no pose error enters);
+    // else the missing wall's position, which needs only that wall to have been seen there.
+    const auto map_dim = [&](const WallProfile& w) { return dim(w, a); };
+    double value = from_map(map_dim, false);
+    if (std::isnan(value) && seen >= 0) {
+      const int missing = seen ^ 1;
+      value = own_position(seen) +
+              from_map([&](const WallProfile& w) { return w.wall_m[missing]; }, true);
+    }
+    if (std::isnan(value)) value = from_map(map_dim, true);
+    if (std::isnan(value)) continue;
+    source = DimensionSource::Context;
+    dim_value = value;
+    if (seen >= 0) {
+      Wall& wm = m.walls[seen ^ 1];
+      wm.found = true;
+      wm.source = DimensionSource::Context;
+      wm.offset_m = value - m.walls[seen].offset_m;
+      changed = true;
+    }
+  }
+  if (changed) rebuild_wall_geometry(m, tunnel_.forbidden_band_m);
+  describe_tunnel_map(m);
+}
+
+void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isometry3d& T) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (ensure_frame(r.map, T) && r.map.detected) {
+    Pieces own;
+    frame_pieces(r, T, index, own);
+    apply_context(r.map, own, T);
+    if (r.map.detected)
+      for (auto& [k, v] : own) {
+        std::vector<Piece>& dst = pieces_[k];
+        dst.insert(dst.end(), v.begin(), v.end());
+      }
+  }
+  scans_.push_back({r.map, T, index});
+  TunnelMap& kept = scans_.back().map;  // per-plane arrays are not needed for the map
+  kept.plane_classes.clear();
+  kept.plane_outlier.clear();
+  kept.plane_candidate_classes.clear();
+  last_frame_ms_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+
+namespace {
+
+// A world-frame map of one section: its four walls at their positions from the centre line
+// (NaN: unknown, drawn at the opposite wall's mirror and not part of the map), swept from `s0`
+// to `s1` along the axis.
+TunnelMap section_map(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis,
+                      const Eigen::Vector3d& up, const double wall_m[4], double s0, double s1,
+                      double band) {
+  TunnelMap m;
+  m.detected = true;
+  m.status = "ok";
+  m.axis_dir = axis;
+  m.up = up;
+  double pos[4];
+  for (int c = 0; c < 4; ++c) {
+    const double mirror = wall_m[c ^ 1];
+    pos[c] = !std::isnan(wall_m[c]) ? wall_m[c] : !std::isnan(mirror) ? mirror : 0.5;
+    m.walls[c].found = !std::isnan(wall_m[c]);
+    m.walls[c].source = m.walls[c].found ? DimensionSource::Measured : DimensionSource::Unseen;
+    m.walls[c].offset_m = pos[c];
+  }
+  m.width_m = pos[0] + pos[1];
+  m.height_m = pos[2] + pos[3];
+  TemplateFrame tf;
+  tf.ok = true;
+  tf.axis = axis;
+  tf.up = up;
+  tf.right = axis.cross(up);
+  build_wall_geometry(tf, {pos[0], pos[1], pos[2], pos[3]}, s0, s1, band, m);
+  for (Wall& w : m.walls)
+    if (!w.found) w.zones.clear();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation() = origin;
+  return transform_map(m, T);
+}
+
+}  // namespace
+
+StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  StationMap out;
+  out.options = options_;
+  out.origin = origin_;
+  out.axis = axis_;
+  out.up = up_;
+  out.frames = static_cast<int>(scans_.size());
+  out.poses = merge_scans(scans_, pose_groups, options_.zone_gap_m).poses;
+  for (const ScanInput& s : scans_) out.frames_used += s.map.detected ? 1 : 0;
+  if (pieces_.empty()) {
+    out.status = "no_detection";
+    out.reason = "no frame measured a wall of the tunnel; every pose needs a rescan";
+    return out;
+  }
+  const int k0 = pieces_.begin()->first, k1 = pieces_.rbegin()->first;
+  const std::vector<WallProfile> prof = profile(pieces_, k0, k1);
+  const std::size_t n = prof.size();
+  std::vector<double> w(n), h(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    w[k] = prof[k].wall_m[0] + prof[k].wall_m[1];
+    h[k] = prof[k].wall_m[2] + prof[k].wall_m[3];
+  }
+  const SectionSplit split = split_sections(w, h, options_.section_change_mm / 1000.0,
+                                            options_.min_section_stations);
+  const double step = options_.station_step_m;
+  const auto deviation = [](double v, const std::optional<double>& design) -> std::optional<double> {
+    if (!design || std::isnan(v)) return std::nullopt;
+    return (v - *design) * 1000.0;
+  };
+  for (const SectionRun& run : split.sections) {
+    // Section: bounds at its stations' bin edges; frames that measured any of its stations.
+    Section sec;
+    sec.from_m = (k0 + run.first) * step;
+    sec.to_m = (k0 + run.last + 1) * step;
+    sec.width_m = !std::isnan(run.width_m) ? run.width_m : options_.design_width_m.value_or(kNaN);
+    sec.height_m = !std::isnan(run.height_m) ? run.height_m : options_.design_height_m.value_or(kNaN);
+    std::vector<int> frames;
+    double wall_pos[4];
+    for (int c = 0; c < 4; ++c) {
+      std::vector<double> v;
+      for (int k = run.first; k <= run.last; ++k)
+        if (!split.outlier[static_cast<std::size_t>(k)] && !std::isnan(prof[k].wall_m[c]))
+          v.push_back(prof[k].wall_m[c]);
+      wall_pos[c] = median(v);
+    }
+    for (int a : {0, 2}) {  // a wall the section never showed: from the other and the dimension
+      const double dim = a == 0 ? sec.width_m : sec.height_m;
+      for (int c : {a, a + 1})
+        if (std::isnan(wall_pos[c]) && !std::isnan(wall_pos[c ^ 1]) && !std::isnan(dim))
+          wall_pos[c] = dim - wall_pos[c ^ 1];
+    }
+    for (auto it = pieces_.lower_bound(k0 + run.first);
+         it != pieces_.end() && it->first <= k0 + run.last; ++it)
+      for (const Piece& p : it->second) frames.push_back(p.frame);
+    std::sort(frames.begin(), frames.end());
+    sec.frames = static_cast<int>(std::unique(frames.begin(), frames.end()) - frames.begin());
+    out.sections.push_back(sec);
+    out.section_maps.push_back(
+        section_map(origin_, axis_, up_, wall_pos, sec.from_m, sec.to_m, tunnel_.forbidden_band_m));
+
+    for (int k = run.first; k <= run.last; ++k) {
+      Station st;
+      st.station_m = (k0 + k + 0.5) * step;
+      st.frames = prof[k].frames;
+      const bool rejected = split.outlier[static_cast<std::size_t>(k)];
+      for (int c = 0; c < 4; ++c) st.wall_m[c] = rejected ? kNaN : prof[k].wall_m[c];
+      // Measured here; else the section's value (the context of the stations around);
+      // else the design; else unseen.
+      const auto fill = [&](double measured, double section, const std::optional<double>& design,
+                            double& value, DimensionSource& source) {
+        if (!rejected && !std::isnan(measured))
+          value = measured, source = DimensionSource::Measured;
+        else if (!std::isnan(section))
+          value = section, source = DimensionSource::Context;
+        else if (design)
+          value = *design, source = DimensionSource::Design;
+      };
+      fill(w[k], run.width_m, options_.design_width_m, st.width_m, st.width_source);
+      fill(h[k], run.height_m, options_.design_height_m, st.height_m, st.height_source);
+      if (st.width_source != DimensionSource::Unseen)
+        st.width_dev_mm = deviation(st.width_m, options_.design_width_m);
+      if (st.height_source != DimensionSource::Unseen)
+        st.height_dev_mm = deviation(st.height_m, options_.design_height_m);
+      const auto off = [&](const std::optional<double>& dev, DimensionSource src) {
+        return dev && src != DimensionSource::Design && std::abs(*dev) > options_.tolerance_mm;
+      };
+      st.out_of_tolerance = off(st.width_dev_mm, st.width_source) ||
+                            off(st.height_dev_mm, st.height_source);
+      out.stations.push_back(st);
+    }
+  }
+  out.ok = true;
+  out.status = "ok";
+  out.timings_ms["map"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace tunnelmap

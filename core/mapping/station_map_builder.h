@@ -1,0 +1,79 @@
+#pragma once
+// StationMapBuilder: builds the StationMap frame by frame, in frame order, and is the context of
+// a posed sequence: each frame is compared with the map at the stations it sees, and a wall it
+// did not see is inferred from the map there (or from the design).
+#include <Eigen/Geometry>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "core/mapping/station_map.h"
+#include "core/pipeline/pipeline.h"
+
+namespace tunnelmap {
+
+// The options the parameter table gives (map.*, tunnel.design_*, zone gap and symmetric step).
+StationMapOptions station_map_options(const Parameters& params);
+
+class StationMapBuilder {
+ public:
+  StationMapBuilder(StationMapOptions options, TunnelOptions tunnel);
+
+  // One frame, in frame order: its detection (camera frame, may be a failure) with the cloud and
+  // the plane labels it came from, and its camera-to-world pose. Updates `result.map`: missing
+  // walls inferred from the map so far (else the design), and "inconsistent_with_context" when
+  // the frame disagrees with several frames before it at the stations it sees. Accepted frames
+  // add their wall points to the map.
+  void add_frame(int index, FrameResult& result, const Eigen::Isometry3d& camera_to_world);
+
+  // The map of every frame added so far. `pose_groups[i]`: group of the i-th frame added.
+  StationMap finish(const std::vector<int>& pose_groups) const;
+
+  int frames() const { return static_cast<int>(scans_.size()); }
+  double last_frame_ms() const { return last_frame_ms_; }
+
+ private:
+  // A plane's points within one station, seen by one frame: their mean position outward from the
+  // map's centre line (left, right, top or bottom wall), along the map's directions and along
+  // the frame's own wall normals (which a rotation error of the frame's pose does not tilt).
+  struct Piece {
+    int station;
+    int wall;
+    int frame;
+    int points;
+    double position_m;
+    double own_position_m;
+  };
+  struct WallProfile {  // per station, positions of the four walls (NaN: not measured)
+    double wall_m[4];
+    int frames;
+  };
+
+  using Pieces = std::map<int, std::vector<Piece>>;  // by station
+
+  bool ensure_frame(const TunnelMap& map, const Eigen::Isometry3d& T);
+  void frame_pieces(const FrameResult& r, const Eigen::Isometry3d& T, int frame,
+                    Pieces& out) const;
+  // Per-station wall positions of `pieces`, stations [k0, k1].
+  // `own`: along the frame's own wall normals (a single frame's pieces).
+  std::vector<WallProfile> profile(const Pieces& pieces, int k0, int k1, bool own = false) const;
+  // The frame's own measurement along the axis: split where its cross-section changes (a
+  // frame that sees two sections measures each part separately), each dimension taken where
+  // both walls of its pair were seen at the same station (a tilt of the wall normals then
+  // cannot become a size error between walls seen at different distances). Sets m.parts and
+  // the measured width/height to the part nearest the camera.
+  void own_parts(TunnelMap& m, const Pieces& own, int camera_station) const;
+  // The context step of add_frame: check against the map so far, then infer missing walls.
+  void apply_context(TunnelMap& map, const Pieces& own, const Eigen::Isometry3d& T) const;
+
+  StationMapOptions options_;
+  TunnelOptions tunnel_;
+  bool have_frame_ = false, have_origin_ = false;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero(), axis_ = Eigen::Vector3d::UnitX(),
+                  up_ = Eigen::Vector3d::UnitZ(), first_view_ = Eigen::Vector3d::UnitX();
+  Pieces pieces_;                 // accepted frames' pieces
+  std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
+  double last_frame_ms_ = 0.0;
+};
+
+}  // namespace tunnelmap

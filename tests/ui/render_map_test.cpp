@@ -1,0 +1,177 @@
+// tunnelmap-render on a map mesh PLY (as write_map_ply writes it): the oblique view shows the
+// whole map, lit and in its zone colours; the other views work too; bad files fail cleanly.
+// Also the CLI's helper that runs the renderer for the inspection report.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "app/cli/map_image.h"
+#include "core/export/map_ply.h"
+#include "tests/ui/synthetic_tunnel.h"
+#include "ui/scene/image_checks.h"
+#include "ui/scene/rgb_image.h"
+#include "ui/scene/scene_colors.h"
+
+namespace tunnelmap {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string fresh_dir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A 12 m map of a 0.82 x 1.30 m tunnel in a world frame whose axis is not a world axis.
+std::string write_map(const std::string& dir) {
+  const auto pf = test::make_synthetic_tunnel(0.82, 1.30, 12.0);
+  Eigen::Isometry3d to_world = Eigen::Isometry3d::Identity();
+  to_world.linear() = (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) *
+                       Eigen::AngleAxisd(-0.5 * M_PI, Eigen::Vector3d::UnitX())).toRotationMatrix();
+  to_world.translation() = Eigen::Vector3d(3.0, -1.0, 0.7);
+  const std::string path = dir + "/map.ply";
+  write_map_ply(path, pf.result.map, nlohmann::json::object(), to_world);
+  return path;
+}
+
+struct RenderRun {
+  int status = -1;
+  std::string line;
+};
+
+RenderRun render(const std::string& args, const std::string& png) {
+  RenderRun r;
+  const std::string cmd = std::string("env -u DISPLAY ") + TUNNELMAP_RENDER_PATH + " " + args + " --screenshot " +
+                          png + " > " + png + ".txt 2>&1";
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(png + ".txt");
+  std::getline(in, r.line);
+  return r;
+}
+
+// Pixels that are not the scene background.
+double foreground_fraction(const scene::RgbImage& img) {
+  const int bg[3] = {static_cast<int>(scene::kBackground[0] * 255 + 0.5), static_cast<int>(scene::kBackground[1] * 255 + 0.5),
+                     static_cast<int>(scene::kBackground[2] * 255 + 0.5)};
+  std::size_t n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const auto* p = img.at(x, y);
+      if (std::abs(p[0] - bg[0]) + std::abs(p[1] - bg[1]) + std::abs(p[2] - bg[2]) > 30) ++n;
+    }
+  return static_cast<double>(n) / (static_cast<double>(img.width) * img.height);
+}
+
+// Lit zone colours: red (traversable) and orange (forbidden) by hue, bright enough not to read
+// as black.
+void count_zone_colours(const scene::RgbImage& img, int& red, int& orange) {
+  red = orange = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const int r = img.at(x, y)[0], g = img.at(x, y)[1], b = img.at(x, y)[2];
+      if (r < 90) continue;
+      if (g < 0.3 * r && b < 0.3 * r) ++red;
+      else if (g > 0.4 * r && g < 0.8 * r && b < 0.3 * r) ++orange;
+    }
+}
+
+TEST(RenderMapPly, ObliqueViewShowsTheWholeMapLitInItsColours) {
+  const std::string dir = fresh_dir("tunnelmap_render_map");
+  const std::string ply = write_map(dir), png = dir + "/map.png";
+  const RenderRun r = render(ply + " --size 640x400", png);  // a mesh PLY defaults to the oblique view
+  ASSERT_EQ(r.status, 0) << r.line;
+  EXPECT_NE(r.line.find("view oblique, map mesh"), std::string::npos) << r.line;
+  // The boundary runs from 0.5 to 12 m.
+  const auto len = r.line.find("(length ");
+  ASSERT_NE(len, std::string::npos) << r.line;
+  EXPECT_NEAR(std::atof(r.line.c_str() + len + 8), 11.5, 0.01) << r.line;
+  // The whole map is in the image and fills most of it.
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  const auto at = r.line.find("mesh box ");
+  ASSERT_NE(at, std::string::npos) << r.line;
+  ASSERT_EQ(std::sscanf(r.line.c_str() + at, "mesh box %d,%d %d,%d", &x0, &y0, &x1, &y1), 4) << r.line;
+  EXPECT_GE(x0, 0);
+  EXPECT_GE(y0, 0);
+  EXPECT_LT(x1, 640);
+  EXPECT_LT(y1, 400);
+  EXPECT_GT(x1 - x0, 640 * 7 / 10) << r.line;
+  const scene::RgbImage img = scene::load_png(png);
+  ASSERT_EQ(img.width, 640);
+  ASSERT_EQ(img.height, 400);
+  EXPECT_GT(foreground_fraction(img), 0.15);
+  int red = 0, orange = 0;
+  count_zone_colours(img, red, orange);
+  EXPECT_GT(red, 3000) << "traversable zones missing or too dark";
+  EXPECT_GT(orange, 1000) << "forbidden zones missing or too dark";
+  if (const char* dump = std::getenv("TUNNELMAP_UI_DUMP")) fs::copy_file(png, std::string(dump) + "/map_oblique.png", fs::copy_options::overwrite_existing);
+}
+
+TEST(RenderMapPly, AlongSideAndTopViewsWorkOnAMap) {
+  const std::string dir = fresh_dir("tunnelmap_render_map_views");
+  const std::string ply = write_map(dir);
+  const scene::RgbImage oblique = [&] {
+    EXPECT_EQ(render(ply + " --size 320x200 --view oblique", dir + "/oblique.png").status, 0);
+    return scene::load_png(dir + "/oblique.png");
+  }();
+  for (const char* view : {"along", "side", "top"}) {
+    const std::string png = dir + "/" + view + ".png";
+    const RenderRun r = render(ply + " --size 320x200 --view " + view, png);
+    ASSERT_EQ(r.status, 0) << view << ": " << r.line;
+    EXPECT_NE(r.line.find(std::string("view ") + view), std::string::npos) << r.line;
+    const scene::RgbImage img = scene::load_png(png);
+    // Seen from the side or from above the 12 m map is a thin strip, but it spans the image.
+    EXPECT_GT(foreground_fraction(img), 0.02) << view;
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    const auto at = r.line.find("mesh box ");
+    ASSERT_NE(at, std::string::npos) << r.line;
+    ASSERT_EQ(std::sscanf(r.line.c_str() + at, "mesh box %d,%d %d,%d", &x0, &y0, &x1, &y1), 4) << r.line;
+    if (std::string(view) != "along") {
+      EXPECT_GT(std::max((x1 - x0) / 320.0, (y1 - y0) / 200.0), 0.8) << r.line;
+    }
+    EXPECT_GT(scene::compare_images(img, oblique, 30).fraction_over, 0.1) << view << " looks like oblique";
+  }
+}
+
+TEST(RenderMapPly, BadPlyIsExitThreeAndNoImage) {
+  const std::string dir = fresh_dir("tunnelmap_render_map_bad");
+  { std::ofstream(dir + "/bad.ply") << "ply\nformat ascii 1.0\nelement vertex 99\n"; }
+  const RenderRun r = render(dir + "/bad.ply", dir + "/bad.png");
+  EXPECT_EQ(r.status, 3) << r.line;
+  EXPECT_NE(r.line.find("bad.ply"), std::string::npos) << r.line;
+  EXPECT_FALSE(fs::exists(dir + "/bad.png"));
+}
+
+TEST(MapImage, RendersThroughTheRendererOrSaysWhyNot) {
+  const std::string dir = fresh_dir("tunnelmap_map_image");
+  const std::string ply = write_map(dir);
+  std::string why;
+  EXPECT_TRUE(cli::render_map_image_with(TUNNELMAP_RENDER_PATH, ply, dir + "/map.png", why)) << why;
+  EXPECT_TRUE(why.empty()) << why;
+  const scene::RgbImage img = scene::load_png(dir + "/map.png");
+  EXPECT_EQ(img.width, 1600);
+  EXPECT_EQ(img.height, 1000);
+
+  EXPECT_FALSE(cli::render_map_image_with(dir + "/no-such-renderer", ply, dir + "/x.png", why));
+  EXPECT_NE(why.find("no-such-renderer"), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+
+  { std::ofstream(dir + "/bad.ply") << "not a ply"; }
+  EXPECT_FALSE(cli::render_map_image_with(TUNNELMAP_RENDER_PATH, dir + "/bad.ply", dir + "/x.png", why));
+  EXPECT_NE(why.find("bad.ply"), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos) << why;
+  EXPECT_FALSE(fs::exists(dir + "/x.png"));
+
+  // From a test executable there is no renderer beside it: a reason, not a crash.
+  EXPECT_FALSE(cli::render_map_image(ply, dir + "/y.png", why));
+  EXPECT_FALSE(why.empty());
+}
+
+}  // namespace
+}  // namespace tunnelmap

@@ -1,0 +1,323 @@
+// The PDF inspection report, written headless (offscreen Qt platform, no DISPLAY) and read back
+// the way a person or a script would: pdftotext for the words and numbers, pdftoppm for the
+// pixels of page 1.
+#include <gtest/gtest.h>
+
+#include <QColor>
+#include <QImage>
+#include <QPainter>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "core/util/error.h"
+#include "tests/ui/report_test_map.h"
+#include "ui/report/inspection_report.h"
+
+namespace tunnelmap {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string fresh_dir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+bool have_tool(const char* tool) {
+  return std::system((std::string("command -v ") + tool + " > /dev/null 2>&1").c_str()) == 0;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Text of pages first..last (all when 0), in reading layout.
+std::string pdf_text(const std::string& pdf, int first = 0, int last = 0) {
+  const std::string txt = pdf + ".txt";
+  std::string cmd = "pdftotext -layout";
+  if (first > 0) cmd += " -f " + std::to_string(first) + " -l " + std::to_string(last);
+  cmd += " '" + pdf + "' '" + txt + "'";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return read_file(txt);
+}
+
+int pdf_pages(const std::string& pdf) {
+  const std::string info = pdf + ".info";
+  EXPECT_EQ(std::system(("pdfinfo '" + pdf + "' > '" + info + "'").c_str()), 0);
+  const std::string text = read_file(info);
+  const auto at = text.find("Pages:");
+  return at == std::string::npos ? 0 : std::atoi(text.c_str() + at + 6);
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+// A stand-in for the rendered map image: a dark background with a coloured box.
+std::string write_fake_map_png(const std::string& dir) {
+  QImage img(800, 500, QImage::Format_RGB888);
+  img.fill(QColor(31, 31, 36));
+  QPainter p(&img);
+  p.fillRect(QRect(200, 120, 400, 260), QColor(220, 30, 30));
+  p.fillRect(QRect(200, 120, 400, 20), QColor(30, 60, 230));
+  p.end();
+  const std::string path = dir + "/map.png";
+  img.save(QString::fromStdString(path));
+  return path;
+}
+
+InspectionReportInput report_input(const StationMap& map, const std::string& image) {
+  InspectionReportInput in;
+  in.input = "/data/girder-7/dataset.json";
+  in.created = "2024-05-14 09:30";
+  in.params = {{"grow.angle_deg", 4.0}, {"grow.distance_m", 0.02}, {"cloud.max_range_m", 5.0},
+               {"normals.smoothing_px", 10}, {"map.station_step_m", 0.1}, {"tunnel.zone_gap_m", 0.01},
+               {"outliers.bins", 20}};
+  in.map = &map;
+  in.map_image_png = image;
+  if (image.empty()) in.map_image_note = "tunnelmap-render was not found next to tunnelmap-cli";
+  return in;
+}
+
+// Every word of every page inside the page margins (16 mm left and right, 14 mm top, 10 mm
+// bottom), as pdftotext -bbox reports them: nothing runs off the page.
+void expect_words_inside_margins(const std::string& pdf) {
+  const std::string html = pdf + ".bbox.html";
+  ASSERT_EQ(std::system(("pdftotext -bbox '" + pdf + "' '" + html + "'").c_str()), 0);
+  const std::string text = read_file(html);
+  const double pt_per_mm = 72.0 / 25.4, slack = 0.5;
+  const double left = 16 * pt_per_mm - slack, right = 595.28 - 16 * pt_per_mm + slack;
+  const double top = 14 * pt_per_mm - slack, bottom = 841.89 - 10 * pt_per_mm + slack;
+  const std::regex word(R"re(<word xMin="([-0-9.]+)" yMin="([-0-9.]+)" xMax="([-0-9.]+)" yMax="([-0-9.]+)">([^<]*)</word>)re");
+  int words = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
+    const auto& m = *it;
+    ++words;
+    EXPECT_GE(std::stod(m[1]), left) << m[5];
+    EXPECT_GE(std::stod(m[2]), top) << m[5];
+    EXPECT_LE(std::stod(m[3]), right) << m[5];
+    EXPECT_LE(std::stod(m[4]), bottom) << m[5];
+  }
+  EXPECT_GT(words, 100);
+}
+
+#define REQUIRE_POPPLER()                                                                       \
+  if (!have_tool("pdftotext") || !have_tool("pdftoppm") || !have_tool("pdfinfo")) {             \
+    FAIL() << "pdftotext/pdftoppm/pdfinfo not found: install poppler-utils (scripts/install-deps.sh)"; \
+  }
+
+TEST(InspectionReport, HoldsSectionsOutOfToleranceStationsAndRescanPose) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report");
+  const StationMap map = test::make_report_station_map();
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, write_fake_map_png(dir)));
+  ASSERT_TRUE(fs::exists(pdf));
+  const std::string text = pdf_text(pdf);
+  // Header: input, date, version, design and tolerance.
+  EXPECT_NE(text.find("Tunnel inspection report"), std::string::npos);
+  EXPECT_NE(text.find("/data/girder-7/dataset.json"), std::string::npos);
+  EXPECT_NE(text.find("2024-05-14 09:30"), std::string::npos);
+  EXPECT_NE(text.find(std::string("TunnelMap ") + TUNNELMAP_VERSION), std::string::npos);
+  EXPECT_NE(text.find("0.820 \u00d7 1.300 m"), std::string::npos);
+  EXPECT_NE(text.find("\u00b1 10 mm"), std::string::npos);
+  EXPECT_NE(text.find("grow.angle_deg"), std::string::npos);
+  EXPECT_NE(text.find("normals.smoothing_px"), std::string::npos);
+  // Summary.
+  EXPECT_NE(text.find("4 of 240 stations"), std::string::npos) << text;
+  EXPECT_NE(text.find("1 of 6"), std::string::npos);
+  // Every section's extent and size.
+  for (const Section& s : map.sections) {
+    EXPECT_NE(text.find(fmt("%.2f", s.from_m)), std::string::npos);
+    EXPECT_NE(text.find(fmt("%.2f", s.to_m)), std::string::npos);
+    EXPECT_NE(text.find(fmt("%.3f", s.width_m)), std::string::npos) << s.width_m;
+    EXPECT_NE(text.find(fmt("%.3f", s.height_m)), std::string::npos) << s.height_m;
+  }
+  EXPECT_NE(text.find("+7.0"), std::string::npos);  // S2 width against the design
+  // The out-of-tolerance stations with their values and deviations.
+  for (const char* station : {"11.05", "11.15", "11.25", "19.45"})
+    EXPECT_NE(text.find(station), std::string::npos) << station;
+  EXPECT_NE(text.find("0.834"), std::string::npos);
+  EXPECT_NE(text.find("+13.5"), std::string::npos);
+  EXPECT_NE(text.find("1.287"), std::string::npos);
+  EXPECT_NE(text.find("-13.0"), std::string::npos);
+  // The pose to rescan, its frames and message; the good poses are not listed.
+  EXPECT_NE(text.find("P3"), std::string::npos);
+  EXPECT_NE(text.find("21-27"), std::string::npos);
+  EXPECT_NE(text.find("move and rescan: too_few_planes"), std::string::npos);
+  EXPECT_EQ(text.find("14-20"), std::string::npos);
+  // Page numbers on every page.
+  const int pages = pdf_pages(pdf);
+  EXPECT_GE(pages, 2);
+  EXPECT_NE(text.find("page " + std::to_string(pages) + " of " + std::to_string(pages)), std::string::npos);
+  expect_words_inside_margins(pdf);
+
+  // Page 1 as an image: not blank, and the plan's coloured shading is there.
+  ASSERT_EQ(std::system(("pdftoppm -r 50 -png -f 1 -l 1 -singlefile '" + pdf + "' '" + dir + "/page1'").c_str()), 0);
+  QImage page(QString::fromStdString(dir + "/page1.png"));
+  ASSERT_FALSE(page.isNull());
+  EXPECT_NEAR(page.width(), 413, 3);  // A4 at 50 dpi
+  int ink = 0, colour = 0;
+  for (int y = 0; y < page.height(); ++y)
+    for (int x = 0; x < page.width(); ++x) {
+      const QColor c = page.pixelColor(x, y);
+      if (c.red() < 200 || c.green() < 200 || c.blue() < 200) ++ink;
+      if (c.saturation() > 40 && c.value() > 60) ++colour;
+    }
+  const int total = page.width() * page.height();
+  EXPECT_GT(ink, total / 100) << "page 1 is (nearly) blank";
+  EXPECT_GT(colour, total / 200) << "page 1 has no coloured plan";
+}
+
+TEST(InspectionReport, SaysNoneWhenNothingIsOutOfToleranceOrToRescanAndWhyThereIsNoImage) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_none");
+  StationMap map = test::make_report_station_map();
+  for (Station& s : map.stations) s.out_of_tolerance = false;
+  for (PoseGroupStatus& p : map.poses) p.rescan = false;
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, ""));
+  const std::string text = pdf_text(pdf);
+  EXPECT_NE(text.find("none: every station is within"), std::string::npos);
+  EXPECT_NE(text.find("none: every pose found the tunnel"), std::string::npos);
+  EXPECT_NE(text.find("tunnelmap-render was not found next to tunnelmap-cli"), std::string::npos);
+}
+
+TEST(InspectionReport, WithoutDesignSaysNone) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_nodesign");
+  StationMap map = test::make_report_station_map();
+  map.options.design_width_m.reset();
+  map.options.design_height_m.reset();
+  for (Station& s : map.stations) {
+    s.width_dev_mm.reset();
+    s.height_dev_mm.reset();
+    s.out_of_tolerance = false;
+  }
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, ""));
+  const std::string text = pdf_text(pdf);
+  EXPECT_NE(text.find("Design"), std::string::npos);
+  EXPECT_NE(text.find("none: no design cross-section was given"), std::string::npos);
+  EXPECT_EQ(text.find("width (mm)"), std::string::npos);  // no deviation columns
+}
+
+// A design far from the tunnel puts every station out of tolerance: the table runs over several
+// pages and every page with its rows starts with its header.
+TEST(InspectionReport, LongTableRepeatsItsHeaderOnEveryPage) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_long");
+  StationMap map = test::make_report_station_map();
+  map.options.design_width_m = 0.80;
+  for (Station& s : map.stations) {
+    s.width_dev_mm = (s.width_m - 0.80) * 1000.0;
+    s.out_of_tolerance = true;
+  }
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, ""));
+  const int pages = pdf_pages(pdf);
+  ASSERT_GE(pages, 5);
+  // A row of the table: its two source columns side by side.
+  const std::regex row("(measured|context|design) +(measured|context|design)");
+  int pages_with_rows = 0;
+  for (int page = 1; page <= pages; ++page) {
+    const std::string text = pdf_text(pdf, page, page);
+    if (!std::regex_search(text, row)) continue;
+    ++pages_with_rows;
+    EXPECT_NE(text.find("Station (m)"), std::string::npos) << "page " << page << " has rows but no header";
+    EXPECT_NE(text.find("Height from"), std::string::npos) << "page " << page;
+  }
+  EXPECT_GE(pages_with_rows, 3);
+  const std::string all = pdf_text(pdf);
+  EXPECT_NE(all.find("240 of 240 stations"), std::string::npos);
+  EXPECT_NE(all.find("23.95"), std::string::npos);  // the last station is listed
+}
+
+TEST(InspectionReport, NothingRunsOffThePageEvenWithALongInputPath) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_margins");
+  const StationMap map = test::make_report_station_map();
+  InspectionReportInput in = report_input(map, "");
+  in.input = "/surveys/" + std::string(70, 'a') + "/" + std::string(70, 'b') + "/girder_7_dataset.json";
+  in.params["tunnel.a_parameter_with_a_rather_long_key_name"] = "a text value with words";
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, in);
+  expect_words_inside_margins(pdf);
+}
+
+TEST(InspectionReport, UnwritablePathGivesInputErrorAndLeavesNoFile) {
+  const std::string dir = fresh_dir("tunnelmap_report_unwritable");
+  const StationMap map = test::make_report_station_map();
+  const std::string missing = dir + "/no/such/folder/report.pdf";
+  try {
+    write_inspection_report(missing, report_input(map, ""));
+    FAIL() << "no error for a missing folder";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), missing);
+    EXPECT_NE(std::string(e.what()).find(missing), std::string::npos);
+  }
+  // The path is a folder: nothing replaces it and no temporary file stays beside it.
+  const std::string folder = dir + "/report.pdf";
+  fs::create_directories(folder);
+  EXPECT_THROW(write_inspection_report(folder, report_input(map, "")), InputError);
+  EXPECT_TRUE(fs::is_directory(folder));
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++entries;
+    EXPECT_EQ(e.path().filename(), "report.pdf") << "left behind: " << e.path();
+  }
+  EXPECT_EQ(entries, 1);
+  EXPECT_FALSE(fs::exists(dir + "/no"));
+}
+
+TEST(InspectionReport, ExistingReportIsReplacedWhole) {
+  const std::string dir = fresh_dir("tunnelmap_report_replace");
+  const std::string pdf = dir + "/report.pdf";
+  { std::ofstream(pdf) << "old"; }
+  const StationMap map = test::make_report_station_map();
+  write_inspection_report(pdf, report_input(map, ""));
+  EXPECT_EQ(read_file(pdf).substr(0, 5), "%PDF-");
+  EXPECT_GT(fs::file_size(pdf), 10000u);
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    ++entries;
+    EXPECT_EQ(e.path().filename(), "report.pdf") << "left behind: " << e.path();
+  }
+  EXPECT_EQ(entries, 1);
+}
+
+TEST(InspectionReport, MapThatWasNotBuiltStillGivesAReportThatSaysWhy) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_not_built");
+  StationMap map;
+  map.status = "no_poses";
+  map.reason = "the dataset has no camera poses or arm joints";
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, ""));
+  const std::string text = pdf_text(pdf);
+  EXPECT_NE(text.find("not built: no_poses"), std::string::npos) << text;
+  EXPECT_NE(text.find("no camera poses or arm joints"), std::string::npos);
+  EXPECT_NE(text.find("Nothing to draw"), std::string::npos);
+  EXPECT_NE(text.find("none: no stretch of constant cross-section"), std::string::npos);
+  expect_words_inside_margins(pdf);
+}
+
+TEST(InspectionReport, NoMapIsAnInputError) {
+  InspectionReportInput in;
+  EXPECT_THROW(write_inspection_report(::testing::TempDir() + "x.pdf", in), InputError);
+}
+
+}  // namespace
+}  // namespace tunnelmap
