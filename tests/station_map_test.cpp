@@ -11,6 +11,7 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "core/mapping/station_sections.h"
 #include "tests/support/cli_runner.h"
@@ -179,6 +180,76 @@ TEST_F(SectionWalk, CsvHasOneRowPerStationAndPlyOneSweptBoxPerSection) {
   const std::string ply = slurp(dir->file("map.ply"));
   EXPECT_NE(ply.find("comment sections 3\n"), std::string::npos);
   EXPECT_NE(ply.find("comment section 1 0.79"), std::string::npos);
+}
+
+TEST_F(SectionWalk, FuseMapFollowsTheSectionsToo) {
+  const CliRun fuse = run_cli("fuse " + dir->file("walk") + " --params " + kLabPreset +
+                              " --set fusion.voxel_mm=20 --map " + dir->file("fused_map.ply") +
+                              " --json " + dir->file("fuse.json"));
+  ASSERT_EQ(fuse.exit_code, 0) << fuse.err;
+  const std::string ply = slurp(dir->file("fused_map.ply"));
+  EXPECT_NE(ply.find("comment sections 3\n"), std::string::npos);
+  const nlohmann::json j = read_json(dir->file("fuse.json"));
+  const nlohmann::json m = read_json(dir->file("map.json"));
+  ASSERT_EQ(j["sections"].size(), 3u);
+  for (int i = 0; i < 3; ++i) {  // the same map as `map`
+    EXPECT_NEAR(j["sections"][i]["width_m"].get<double>(), m["sections"][i]["width_m"].get<double>(), 1e-6);
+    EXPECT_NEAR(j["sections"][i]["from_m"].get<double>(), m["sections"][i]["from_m"].get<double>(), 1e-6);
+  }
+}
+
+TEST_F(SectionWalk, PosedDetectionTakesTheChangesOfSectionAndMeasuresEachPartOfAFrame) {
+  const CliRun det = run_cli("detect " + dir->file("walk") + " --params " + kLabPreset +
+                             " --json " + dir->file("detect.json"));
+  ASSERT_EQ(det.exit_code, 0) << det.err;
+  const nlohmann::json d = read_json(dir->file("detect.json"));
+  const nlohmann::json ds = read_json(dir->file("walk/dataset.json"));
+  const std::vector<TrueSection> truth = true_sections(ds);
+  const nlohmann::json m = read_json(dir->file("map.json"));
+  const double ox = m["frame"]["origin"][0].get<double>();
+  int two_part_frames = 0;
+  for (const auto& f : d["frames"]) {
+    SCOPED_TRACE(f.dump().substr(0, 300));
+    // A change of section is never taken for an inconsistency with the context.
+    ASSERT_TRUE(f["detected"].get<bool>());
+    ASSERT_TRUE(f.contains("parts"));
+    // Each part the frame saw is measured separately: its width is the true width of the
+    // section it lies in, within 4 mm (parts that end near a joint are left out).
+    for (const auto& p : f["parts"]) {
+      if (p["width_m"].is_null()) continue;
+      const double a = ox + p["from_m"].get<double>(), b = ox + p["to_m"].get<double>();
+      for (const TrueSection& t : truth)
+        if (a >= t.from_x + 0.15 && b <= t.to_x - 0.15 && b - a > 0.3)
+          EXPECT_NEAR(p["width_m"].get<double>(), t.width, 0.004);
+    }
+    two_part_frames += f["parts"].size() >= 2;
+  }
+  EXPECT_GE(two_part_frames, 10) << "frames that see a joint";
+}
+
+TEST_F(SectionWalk, AnIsolatedOutlierFrameIsStillRejected) {
+  // Frame 20's depth scaled by 8 %: its walls move 30-35 mm outwards, where several frames
+  // before it measured the tunnel.
+  IoTempDir copy;
+  std::filesystem::copy(dir->file("walk"), copy.file("walk"), std::filesystem::copy_options::recursive);
+  const std::string png = copy.file("walk/depth/000020.png");
+  cv::Mat depth = cv::imread(png, cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(depth.type(), CV_16UC1);
+  depth.convertTo(depth, CV_16UC1, 1.08);
+  ASSERT_TRUE(cv::imwrite(png, depth));
+  const CliRun det = run_cli("detect " + copy.file("walk") + " --params " + kLabPreset +
+                             " --json " + copy.file("d.json"));
+  ASSERT_EQ(det.exit_code, 0) << det.err;
+  const nlohmann::json d = read_json(copy.file("d.json"));
+  for (const auto& f : d["frames"]) {
+    if (f["index"] == 20) {
+      EXPECT_FALSE(f["detected"].get<bool>());
+      EXPECT_EQ(f["status"], "inconsistent_with_context");
+      EXPECT_NE(f["reason"].get<std::string>().find("differs from the map at"), std::string::npos);
+    } else {
+      EXPECT_TRUE(f["detected"].get<bool>()) << f["index"];
+    }
+  }
 }
 
 TEST_F(SectionWalk, ReportPdfHoldsTheSectionsAndTheOutOfToleranceStations) {
