@@ -7,6 +7,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/mapping/frame_walls.h"
 #include "core/mapping/station_sections.h"
 #include "core/tunnel/tunnel_detector.h"
 #include "core/tunnel/wall_geometry.h"
@@ -73,21 +74,10 @@ bool StationMapBuilder::ensure_frame(const TunnelMap& map, const Eigen::Isometry
   return true;
 }
 
-void StationMapBuilder::frame_pieces(const FrameResult& r, const Eigen::Isometry3d& T, int frame,
-                                     Pieces& out) const {
+void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls,
+                                     const Eigen::Isometry3d& T, int frame, Pieces& out) const {
   out.clear();
-  const TunnelMap& m = r.map;
-  const PlaneSegments& ps = r.planes;
-  if (ps.labels.empty() || r.cloud.points.size() != ps.labels.size()) return;
-  // Label -> wall class (or -1) of the planes that measure a wall in this frame.
-  std::unordered_map<int, int> wall_of;
-  for (std::size_t i = 0; i < ps.planes.size() && i < m.plane_classes.size(); ++i) {
-    const WallClass c = m.plane_classes[i];
-    if (c == WallClass::Unassigned || ps.planes[i].edge_on) continue;
-    if (!m.wall(c).found || m.wall(c).source != DimensionSource::Measured) continue;
-    wall_of[ps.planes[i].id] = static_cast<int>(c);
-  }
-  if (wall_of.empty()) return;
+  if (walls.samples.empty()) return;
   Eigen::Vector3d dir[4];
   outward(axis_, up_, dir);
   const Eigen::Matrix3f R = T.linear().cast<float>();
@@ -106,20 +96,15 @@ void StationMapBuilder::frame_pieces(const FrameResult& r, const Eigen::Isometry
     int wall = 0;
   };
   std::unordered_map<long long, Sum> sums;
-  for (std::size_t i = 0; i < ps.labels.size(); ++i) {
-    const int label = ps.labels[i];
-    if (label <= 0) continue;
-    const auto it = wall_of.find(label);
-    if (it == wall_of.end()) continue;
-    const Eigen::Vector3f& pc = r.cloud.points[i];
-    if (!OrganizedCloud::valid(pc)) continue;
-    const Eigen::Vector3f p = R * pc + t;
+  for (const WallSample& ws : walls.samples) {
+    if (ws.wall >= 4) continue;
+    const Eigen::Vector3f p = R * ws.point + t;
     const int station = static_cast<int>(std::floor(a.dot(p) * inv_step));
-    Sum& s = sums[(static_cast<long long>(station) << 20) ^ label];
-    s.position += d[it->second].dot(p);
-    s.own_position += own[it->second].dot(p);
-    ++s.points;
-    s.wall = it->second;
+    Sum& s = sums[(static_cast<long long>(station) << 20) ^ ws.plane];
+    s.position += static_cast<double>(d[ws.wall].dot(p)) * ws.points;
+    s.own_position += static_cast<double>(own[ws.wall].dot(p)) * ws.points;
+    s.points += ws.points;
+    s.wall = ws.wall;
   }
   for (const auto& [key, s] : sums) {
     const int station = static_cast<int>(key >> 20);
@@ -361,17 +346,28 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
 
 void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isometry3d& T) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (ensure_frame(r.map, T) && r.map.detected) {
+  FrameWalls walls;
+  extract_frame_walls(r, walls);
+  const double extract_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  add_frame(index, r.map, walls, T);
+  last_frame_ms_ += extract_ms;  // the map's whole cost beyond detection
+}
+
+void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& walls,
+                                  const Eigen::Isometry3d& T) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (ensure_frame(map, T) && map.detected) {
     Pieces own;
-    frame_pieces(r, T, index, own);
-    apply_context(r.map, own, T);
-    if (r.map.detected)
+    frame_pieces(map, walls, T, index, own);
+    apply_context(map, own, T);
+    if (map.detected)
       for (auto& [k, v] : own) {
         std::vector<Piece>& dst = pieces_[k];
         dst.insert(dst.end(), v.begin(), v.end());
       }
   }
-  scans_.push_back({r.map, T, index});
+  scans_.push_back({map, T, index});
   TunnelMap& kept = scans_.back().map;  // per-plane arrays are not needed for the map
   kept.plane_classes.clear();
   kept.plane_outlier.clear();

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/mapping/frame_walls.h"
 #include "core/mapping/station_map.h"
 #include "core/pipeline/pipeline.h"
 
@@ -25,6 +26,10 @@ class StationMapBuilder {
   // the frame disagrees with several frames before it at the stations it sees. Accepted frames
   // add their wall points to the map.
   void add_frame(int index, FrameResult& result, const Eigen::Isometry3d& camera_to_world);
+  // The same from the frame's compact wall samples (extract_frame_walls of its result), for
+  // frames whose images are no longer at hand (rebuilding the map under refined poses).
+  void add_frame(int index, TunnelMap& map, const FrameWalls& walls,
+                 const Eigen::Isometry3d& camera_to_world);
 
   // The map of every frame added so far. `pose_groups[i]`: group of the i-th frame added.
   StationMap finish(const std::vector<int>& pose_groups) const;
@@ -52,8 +57,8 @@ class StationMapBuilder {
   using Pieces = std::map<int, std::vector<Piece>>;  // by station
 
   bool ensure_frame(const TunnelMap& map, const Eigen::Isometry3d& T);
-  void frame_pieces(const FrameResult& r, const Eigen::Isometry3d& T, int frame,
-                    Pieces& out) const;
+  void frame_pieces(const TunnelMap& m, const FrameWalls& walls, const Eigen::Isometry3d& T,
+                    int frame, Pieces& out) const;
   // Per-station wall positions of `pieces`, stations [k0, k1].
   // `own`: along the frame's own wall normals (a single frame's pieces).
   std::vector<WallProfile> profile(const Pieces& pieces, int k0, int k1, bool own = false) const;
