@@ -3,10 +3,14 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/tunnel/tunnel_detector.h"
 #include "core/tunnel/zone_clustering.h"
+#include "core/tunnel/zone_support.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -633,6 +637,157 @@ TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
   EXPECT_EQ(detect(b).status, "partial");
   EXPECT_TRUE(detect(c).detected);
   EXPECT_EQ(detect(d).status, "too_few_planes");
+}
+
+
+// ---- Zone support and gap scaled with the wall's distance (zone_support.h).
+
+ZoneScaling scaling(int min_points, double support_ref_m, double gap_m, double gap_ref_m) {
+  ZoneScaling z;
+  z.min_points = min_points;
+  z.support_ref_m = support_ref_m;
+  z.gap_m = gap_m;
+  z.gap_ref_m = gap_ref_m;
+  return z;
+}
+
+TEST(ZoneSupport, OffKeepsTheConfiguredSupportAndGapAtEveryDistance) {
+  const ZoneScaling off = scaling(300, 0.0, 0.010, 0.0);
+  for (double d : {0.2, 1.0, 3.0, 12.0}) {
+    EXPECT_EQ(off.support_at(d), 300) << d;
+    EXPECT_EQ(off.gap_at(d), 0.010) << d;
+  }
+}
+
+TEST(ZoneSupport, SupportFallsWithTheSquareOfTheDistanceDownToTheFloor) {
+  const ZoneScaling z = scaling(300, 1.0, 0.010, 0.0);
+  EXPECT_EQ(z.support_at(0.4), 300);  // nearer than the reference: never above the configured
+  EXPECT_EQ(z.support_at(1.0), 300);
+  EXPECT_EQ(z.support_at(1.5), 134);  // 300 / 2.25 = 133.3, rounded up
+  EXPECT_EQ(z.support_at(2.0), 75);
+  EXPECT_EQ(z.support_at(3.0), kMinScaledZoneSupport);  // 33.3 < 40
+  EXPECT_EQ(z.support_at(0.0), 300);
+  EXPECT_EQ(z.support_at(-1.0), 300);  // a plane behind the camera: no bonus
+  EXPECT_EQ(scaling(30, 1.0, 0.010, 0.0).support_at(3.0), 30);  // the floor never raises it
+  EXPECT_EQ(z.gap_at(5.0), 0.010);  // the gap has its own switch
+}
+
+TEST(ZoneSupport, GapGrowsWithTheSquareOfTheDistance) {
+  const ZoneScaling z = scaling(300, 0.0, 0.020, 2.0);
+  EXPECT_EQ(z.gap_at(1.0), 0.020);
+  EXPECT_EQ(z.gap_at(2.0), 0.020);
+  EXPECT_NEAR(z.gap_at(3.0), 0.045, 1e-12);
+  EXPECT_NEAR(z.gap_at(4.0), 0.080, 1e-12);
+  EXPECT_EQ(z.support_at(4.0), 300);
+}
+
+TEST(ZoneSupport, NegativeOrNonFiniteReferencesAreOneLineErrors) {
+  for (const ZoneScaling& bad :
+       {scaling(300, -1.0, 0.010, 0.0), scaling(300, 0.0, 0.010, std::nan("")),
+        scaling(300, std::numeric_limits<double>::infinity(), 0.010, 0.0),
+        scaling(300, 1.0, 0.0, 1.0)}) {
+    try {
+      check_zone_scaling(bad);
+      ADD_FAILURE() << "accepted";
+    } catch (const ParameterError& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("zone support ref"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(check_zone_scaling(scaling(300, 1.0, 0.020, 2.0)));
+  TunnelOptions o;
+  o.zone_gap_ref_m = -0.5;
+  const Scene s = SceneBuilder(SceneSpec()).build();
+  EXPECT_THROW(detect(s, o), ParameterError);
+}
+
+TEST(ZoneClustering, ScaledGapMergesFarFragmentsButKeepsNearZonesApart) {
+  // 15 mm apart at 0.5 m: two zones (gap 10 mm). 30 mm apart at 3 m: one zone (gap 90 mm).
+  std::vector<ZonePosition> p = {{0.500, 1000}, {0.515, 1000}, {3.000, 1000}, {3.030, 1000}};
+  std::vector<ZoneCluster> c;
+  cluster_zone_positions(p, scaling(0, 0.0, 0.010, 1.0), c);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_NEAR(c[0].offset_m, 3.015, 1e-12);
+  EXPECT_EQ(c[0].planes, 2);
+  EXPECT_EQ(c[1].planes, 1);
+  EXPECT_EQ(c[2].planes, 1);
+  // Unscaled, the same positions are four zones; and the fixed-gap overload agrees with it.
+  cluster_zone_positions(p, scaling(0, 0.0, 0.010, 0.0), c);
+  EXPECT_EQ(c.size(), 4u);
+  EXPECT_EQ(cluster_zone_positions(p, 0.010).size(), 4u);
+}
+
+TEST(ZoneClustering, ScaledSupportLetsAFarZoneOfFewPointsBoundTheWall) {
+  const std::vector<ZoneCluster> far = {{3.0, 1, 100}, {2.9, 3, 5000}};
+  EXPECT_EQ(outermost_supported_cluster(far, scaling(300, 0.0, 0.010, 0.0)), 1);
+  EXPECT_EQ(outermost_supported_cluster(far, scaling(300, 1.0, 0.010, 0.0)), 0);  // needs 40
+  const std::vector<ZoneCluster> near = {{0.6, 1, 100}, {0.5, 3, 5000}};
+  EXPECT_EQ(outermost_supported_cluster(near, scaling(300, 1.0, 0.010, 0.0)), 1);  // needs 300
+}
+
+// A 4 m wide, 2.4 m high corridor seen from its axis (camera frame: x right, y down, z forward).
+// Roof and floor are large planes 1.2 m away; each side wall 2 m away is three planes of 60
+// points whose offsets spread over +-20 mm, as far noisy walls break up.
+PlaneSegments far_walled_corridor(bool with_roof_and_floor) {
+  PlaneSegments s;
+  const auto add = [&s](const Eigen::Vector3d& n, const Eigen::Vector3d& c, int points) {
+    PlaneSegment p;
+    p.id = static_cast<int>(s.planes.size()) + 1;
+    p.normal = p.mean_normal = n;
+    p.centroid = c;
+    p.offset_m = -n.dot(c);
+    p.points = points;
+    s.planes.push_back(p);
+  };
+  for (int k = 0; k < 3; ++k) {
+    const double spread = 0.020 * (k - 1), z = 3.5 + 0.5 * k;
+    add(Eigen::Vector3d::UnitX(), {-2.0 - spread, 0.2, z}, 60);  // left wall, normal inwards
+    add(-Eigen::Vector3d::UnitX(), {2.0 + spread, -0.2, z}, 60);
+  }
+  if (with_roof_and_floor) {
+    add(Eigen::Vector3d::UnitY(), {0.1, -1.2, 3.0}, 5000);  // roof: normal down the image
+    add(-Eigen::Vector3d::UnitY(), {-0.1, 1.2, 3.0}, 5000);
+  }
+  return s;
+}
+
+TEST(TunnelDetector, ScaledZoneSupportAndGapMeasureFarWallsOfFewPoints) {
+  const Eigen::Vector3d up = -Eigen::Vector3d::UnitY();
+  const PlaneSegments planes = far_walled_corridor(true);
+  TunnelOptions o;
+  o.width_max_m = 7.0;
+  // Fixed support and gap: each side wall is three 60-point zones, none with 300 points.
+  TunnelMap m = detect_tunnel(planes, up, o, nullptr);
+  EXPECT_EQ(m.status, "partial");
+  EXPECT_FALSE(m.wall(WallClass::Left).found);
+  EXPECT_NEAR(m.height_m, 2.4, 1e-9);
+  // Scaled support alone: 75 points at 2 m, still three zones of 60.
+  o.zone_support_ref_m = 1.0;
+  m = detect_tunnel(planes, up, o, nullptr);
+  EXPECT_EQ(m.status, "partial");
+  // With the gap scaled too (40 mm at 2 m) each wall is one zone of 180 points.
+  o.zone_gap_ref_m = 1.0;
+  m = detect_tunnel(planes, up, o, nullptr);
+  ASSERT_EQ(m.status, "ok") << m.reason;
+  EXPECT_EQ(m.wall(WallClass::Left).clusters.size(), 1u);
+  EXPECT_EQ(m.wall(WallClass::Left).clusters[0].points, 180);
+  EXPECT_NEAR(m.width_m, 4.0, 1e-9);
+  EXPECT_NEAR(m.height_m, 2.4, 1e-9);
+}
+
+TEST(TunnelDetector, AFarWallWithoutEnoughScaledSupportSaysWhatItNeeded) {
+  TunnelOptions o;
+  o.width_max_m = 7.0;
+  o.zone_support_ref_m = 1.0;  // gap fixed: 60-point zones at 1.98, 2.00 and 2.02 m
+  const TunnelMap m = detect_tunnel(far_walled_corridor(false), -Eigen::Vector3d::UnitY(), o, nullptr);
+  EXPECT_EQ(m.status, "missing_wall");
+  // 300 * (1 / 2.02)^2 = 73.5 points needed at the outermost (first of the equal) zones.
+  for (const char* wall : {"left", "right"})
+    EXPECT_NE(m.reason.find(std::string(wall) +
+                            " wall: no zone cluster with enough points (largest 60 at 2.02 m, needs 74)"),
+              std::string::npos)
+        << m.reason;
+  EXPECT_EQ(m.reason.find('\n'), std::string::npos);
 }
 
 }  // namespace

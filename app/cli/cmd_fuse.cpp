@@ -1,6 +1,7 @@
 // `tunnelmap-cli fuse DATASET [--mesh OUT.ply] [--map OUT.ply] [--json FILE]`: fuses every
 // posed frame (explicit pose, else forward kinematics of the arm's joints) into a TSDF volume,
 // extracts a coloured mesh and merges the per-frame tunnel maps along the tunnel axis.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -11,6 +12,7 @@
 #include "core/fusion/fuse_dataset.h"
 #include "core/fusion/mesh_accuracy.h"
 #include "core/io/dataset.h"
+#include "core/io/refined_dataset.h"
 #include "core/kinematics/robot_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
@@ -23,21 +25,60 @@ namespace {
 
 struct FuseOptions {
   InputOptions in;
-  std::string mesh_path, map_path, json_path;
+  std::string mesh_path, map_path, json_path, refined_dataset;
   bool prefer_joints = false;
+  bool no_pose_refinement = false;
   bool quiet = false;
 };
 
 nlohmann::json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
+const PoseCorrection* correction_of(const PoseRefinement& r, int group) {
+  if (!r.ran) return nullptr;
+  for (const PoseCorrection& c : r.groups)
+    if (c.group == group) return &c;
+  return nullptr;
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+// {"rotation_deg", "translation_mm", "constrained", "degenerate", "samples"}; null when the
+// poses were not refined.
+nlohmann::json refinement_json(const PoseCorrection* c) {
+  if (!c) return nullptr;
+  return {{"rotation_deg", c->rotation_deg},
+          {"translation_mm", c->translation_mm},
+          {"constrained", c->constrained},
+          {"degenerate", c->degenerate},
+          {"samples", c->samples},
+          {"correction", isometry_to_json(c->delta)}};
+}
+
+// A folder that a command will fill: new or empty.
+void check_new_folder(const std::string& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) &&
+      !(std::filesystem::is_directory(dir, ec) && std::filesystem::is_empty(dir, ec)))
+    throw InputError(dir, "the refined dataset's folder must be new or empty");
+  const std::filesystem::path parent = std::filesystem::absolute(dir).parent_path();
+  if (!std::filesystem::is_directory(parent, ec))
+    throw InputError(dir, "its parent folder does not exist");
+}
+
 void run(const FuseOptions& o, CliContext& ctx) {
   const Parameters params = o.in.parameters();
-  const Dataset ds = read_dataset(o.in.input);
+  const Dataset ds = read_dataset(o.in.input, o.in.read_options());
   for (const std::string& p : {o.mesh_path, o.map_path, o.json_path})
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
+  if (!o.refined_dataset.empty()) check_new_folder(o.refined_dataset);
 
   FuseSettings s;
   s.prefer_joints = o.prefer_joints;
+  s.refine_poses = !o.no_pose_refinement;
   Progress progress(ds.frames.size() * 2);
   s.progress = [&](const std::string& stage, int done, int) {
     progress.step(static_cast<std::size_t>(done) + (stage == "integrate" ? ds.frames.size() : 0));
@@ -63,6 +104,14 @@ void run(const FuseOptions& o, CliContext& ctx) {
   // Simulated datasets carry their true surfaces: report the mesh's accuracy against them.
   const std::vector<PlaneRef> truth = ground_truth_planes(ds.ground_truth);
   const MeshAccuracy acc = mesh_accuracy(mesh, truth, 0.010);
+  // Up to where the whole sequence sits in the world: the map's own consistency.
+  const Eigen::Isometry3d to_truth = align_mesh_to_planes(mesh, truth);
+  const MeshAccuracy aligned = mesh_accuracy(transformed(mesh, to_truth), truth, 0.010);
+  if (!o.refined_dataset.empty()) {
+    std::vector<Eigen::Isometry3d> refined;
+    for (const FusedFrame& f : r.frames) refined.push_back(f.camera_to_world);
+    write_dataset_with_poses(ds, refined, o.refined_dataset);
+  }
   const VoxelGrid& g = r.volume->grid();
   const TunnelMap& m = r.merged.map;
   if (!o.quiet) {
@@ -80,15 +129,26 @@ void run(const FuseOptions& o, CliContext& ctx) {
       std::printf("section %zu: %.2f to %.2f m, width %.4f m, height %.4f m\n", i + 1, sec.from_m,
                   sec.to_m, sec.width_m, sec.height_m);
     }
-    for (const PoseGroupStatus& p : r.merged.poses)
+    for (const PoseGroupStatus& p : r.merged.poses) {
       std::cout << "pose " << p.group << " (frames " << p.frames.front() << "-" << p.frames.back()
-                << "): " << p.message << "\n";
-    if (!truth.empty())
+                << "): " << p.message;
+      if (const PoseCorrection* c = correction_of(r.refinement, p.group))
+        std::printf("; refined by %.2f deg, %.1f mm%s%s", c->rotation_deg, c->translation_mm,
+                    c->degenerate.empty() ? "" : "; not constrained: ",
+                    join(c->degenerate).c_str());
+      std::cout << "\n";
+    }
+    if (!truth.empty()) {
       std::printf("mesh vs ground truth: %.2f %% of vertices within 10 mm (median %.1f mm, "
                   "p95 %.1f mm)\n", 100.0 * acc.fraction_within, acc.median_m * 1000.0,
                   acc.p95_m * 1000.0);
-    std::printf("time: load+detect %.0f ms, integrate %.0f ms, mesh %.0f ms\n",
-                r.timings_ms["load+detect"], r.timings_ms["integrate"], r.timings_ms["mesh"]);
+      std::printf("mesh vs ground truth after one rigid alignment: %.2f %% within 10 mm (median "
+                  "%.1f mm, p95 %.1f mm)\n", 100.0 * aligned.fraction_within,
+                  aligned.median_m * 1000.0, aligned.p95_m * 1000.0);
+    }
+    std::printf("time: load+detect %.0f ms, map and pose refinement %.0f ms (refinement %.0f ms), "
+                "integrate %.0f ms, mesh %.0f ms\n", r.timings_ms["load+detect"],
+                r.timings_ms["map"], r.refinement.ms, r.timings_ms["integrate"], r.timings_ms["mesh"]);
   }
   if (!o.json_path.empty()) {
     nlohmann::json frames = nlohmann::json::array();
@@ -97,6 +157,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
                         {"pose_source", pose_source_name(f.pose_source)},
                         {"pose_group", f.pose_group},
                         {"camera_to_world", isometry_to_json(f.camera_to_world)},
+                        {"given_camera_to_world", isometry_to_json(f.given_camera_to_world)},
                         {"status", f.map.status},
                         {"width_m", f.map.width_m},
                         {"height_m", f.map.height_m}});
@@ -108,7 +169,8 @@ void run(const FuseOptions& o, CliContext& ctx) {
                        {"rescan", p.rescan},
                        {"status", p.status},
                        {"message", p.message},
-                       {"camera_to_world", isometry_to_json(p.camera_to_world)}});
+                       {"camera_to_world", isometry_to_json(p.camera_to_world)},
+                       {"refinement", refinement_json(correction_of(r.refinement, p.group))}});
     nlohmann::json sections = nlohmann::json::array();  // as in `map --json`
     for (const Section& sec : r.stations.sections) sections.push_back(section_json(sec, r.stations.options));
     nlohmann::json doc = {
@@ -139,12 +201,20 @@ void run(const FuseOptions& o, CliContext& ctx) {
           {"height_spread_m", r.merged.height_spread_m}}},
         {"poses", poses},
         {"sections", sections},
+        {"pose_refinement",
+         {{"ran", r.refinement.ran},
+          {"iterations", r.refinement.iterations},
+          {"ms", r.refinement.ms}}},
         {"ground_truth_accuracy",
          truth.empty() ? nlohmann::json(nullptr)
                        : nlohmann::json{{"fraction_within_10mm", acc.fraction_within},
                                         {"median_m", acc.median_m},
                                         {"p95_m", acc.p95_m},
-                                        {"rms_m", acc.rms_m}}},
+                                        {"rms_m", acc.rms_m},
+                                        {"aligned_fraction_within_10mm", aligned.fraction_within},
+                                        {"aligned_median_m", aligned.median_m},
+                                        {"aligned_p95_m", aligned.p95_m},
+                                        {"alignment", isometry_to_json(to_truth)}}},
         {"frames", frames},
         {"timings_ms", r.timings_ms}};
     write_file_atomically(o.json_path, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
@@ -164,6 +234,12 @@ void add_fuse_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--json", opt->json_path, "Summary: volume, mesh, merged map, per-pose verdicts");
   cmd->add_flag("--use-joints", opt->prefer_joints,
                 "Pose from the arm's forward kinematics even where a frame has a \"pose\"");
+  cmd->add_flag("--no-pose-refinement", opt->no_pose_refinement,
+                "Fuse with the forward-kinematics (or given) poses as they are: no correction "
+                "against the tunnel map");
+  cmd->add_option("--refined-dataset", opt->refined_dataset,
+                  "Write the dataset with the refined poses to this new folder (other commands "
+                  "read it like any dataset)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing on success");
   cmd->callback([opt, &ctx] { run(*opt, ctx); });
 }

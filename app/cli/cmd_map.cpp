@@ -18,6 +18,8 @@
 #include "core/fusion/fusion_options.h"
 #include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
+#include "core/kinematics/robot_json.h"
+#include "core/mapping/posed_sequence.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/report/results_json.h"
 #include "core/report/station_map_json.h"
@@ -37,6 +39,7 @@ struct MapOptions {
   std::optional<double> station_step, tolerance_mm;
   std::string design;  // "WxH"
   std::string json_path, csv_path, ply_path, report_path;
+  bool no_pose_refinement = false;
   bool quiet = false;
 };
 
@@ -71,6 +74,21 @@ Parameters map_parameters(const MapOptions& o) {
   return p;
 }
 
+// Per pose group, the correction of its pose against the map (null when not refined).
+void add_refinement(nlohmann::json& doc, const PoseRefinement& r) {
+  doc["pose_refinement"] = {{"ran", r.ran}, {"iterations", r.iterations}, {"ms", r.ms}};
+  for (nlohmann::json& p : doc["poses"]) {
+    p["refinement"] = nullptr;
+    if (!r.ran) continue;
+    for (const PoseCorrection& c : r.groups)
+      if (c.group == p["group"].get<int>())
+        p["refinement"] = {{"rotation_deg", c.rotation_deg},
+                           {"translation_mm", c.translation_mm},
+                           {"constrained", c.constrained},
+                           {"degenerate", c.degenerate}};
+  }
+}
+
 std::string now_text() {
   const std::time_t t = std::time(nullptr);
   char buf[64];
@@ -78,7 +96,8 @@ std::string now_text() {
   return buf;
 }
 
-void print_summary(const StationMap& m, double detect_ms, double map_ms, int frames) {
+void print_summary(const StationMap& m, const PoseRefinement& refinement, double detect_ms,
+                   double map_ms, int frames) {
   std::printf("map: %zu stations of %.2f m over %.2f m, %zu section(s), %d of %d frames used\n",
               m.stations.size(), m.options.station_step_m,
               m.sections.empty() ? 0.0 : m.sections.back().to_m - m.sections.front().from_m,
@@ -97,6 +116,13 @@ void print_summary(const StationMap& m, double detect_ms, double map_ms, int fra
     if (p.rescan)
       std::printf("pose %d (frames %d-%d): %s\n", p.group, p.frames.front(), p.frames.back(),
                   p.message.c_str());
+  if (refinement.ran) {
+    double deg = 0.0, mm = 0.0;
+    for (const PoseCorrection& c : refinement.groups)
+      deg = std::max(deg, c.rotation_deg), mm = std::max(mm, c.translation_mm);
+    std::printf("poses refined against the map: %zu group(s), largest correction %.2f deg, %.1f mm\n",
+                refinement.groups.size(), deg, mm);
+  }
   std::printf("time: detection %.1f ms/frame, map %.2f ms/frame\n",
               frames ? detect_ms / frames : 0.0, frames ? map_ms / frames : 0.0);
 }
@@ -136,7 +162,7 @@ void run(const MapOptions& o, CliContext& ctx) {
   const Parameters params = map_parameters(o);
   Pipeline pipeline = o.in.pipeline();
   pipeline.set_params(params);
-  const Dataset ds = read_dataset(o.in.input);
+  const Dataset ds = read_dataset(o.in.input, o.in.read_options());
 #ifndef TUNNELMAP_HAVE_REPORT
   if (!o.report_path.empty())
     throw ParameterError("--report needs the Qt build of tunnelmap (configure with -DTUNNELMAP_BUILD_GUI=ON)");
@@ -156,33 +182,55 @@ void run(const MapOptions& o, CliContext& ctx) {
   }
   pipeline.set_world_up(ds.up);
 
-  StationMapBuilder builder(station_map_options(params), tunnel_options(params));
-  nlohmann::json frames = nlohmann::json::array();
+  // Detection first (frames in order, one at a time: memory stays flat), keeping each frame's
+  // map and compact wall samples; then the poses refined against the map and the map itself.
+  std::vector<TunnelMap> maps(static_cast<std::size_t>(n));
+  std::vector<FrameWalls> walls(static_cast<std::size_t>(n));
+  std::vector<std::string> sources(static_cast<std::size_t>(n));
+  std::vector<std::size_t> plane_counts(static_cast<std::size_t>(n));
+  std::vector<StageTimings> timings(static_cast<std::size_t>(n));
   Progress progress(static_cast<std::size_t>(n));
-  double detect_ms = 0.0, map_ms = 0.0;
+  double detect_ms = 0.0, extract_ms = 0.0;
   FrameResult result;
   for (int i = 0; i < n; ++i) {
-    DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
-    f.pose = poses[static_cast<std::size_t>(i)];  // the world frame for up and for the map
+    const std::size_t k = static_cast<std::size_t>(i);
+    DepthFrame f = ds.load_frame(k);
+    f.pose = poses[k];  // the world frame for up
     pipeline.run(f, result);
     detect_ms += result.timings_ms.at("total");
-    builder.add_frame(i, result, poses[static_cast<std::size_t>(i)]);
-    map_ms += builder.last_frame_ms();
-    frames.push_back(detection_frame_json(static_cast<std::size_t>(i), f.source, result));
-    progress.step(static_cast<std::size_t>(i + 1));
+    const auto t_extract = std::chrono::steady_clock::now();
+    extract_frame_walls(result, walls[k]);
+    extract_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_extract).count();
+    maps[k] = result.map;
+    sources[k] = f.source;
+    plane_counts[k] = result.planes.planes.size();
+    timings[k] = result.timings_ms;
+    progress.step(k + 1);
   }
-  const std::vector<int> groups = group_poses(poses, fusion_options(params).pose_group_m);
-  StationMap m = builder.finish(groups);
-  map_ms += m.timings_ms["map"];
+  MappedSequence mapped = map_posed_sequence(maps, walls, poses, params, !o.no_pose_refinement);
+  StationMap& m = mapped.stations;
+  const double map_ms = mapped.map_ms + extract_ms;  // everything beyond detection
   m.timings_ms["map"] = map_ms;
+  nlohmann::json frames = nlohmann::json::array();
+  for (std::size_t k = 0; k < maps.size(); ++k) {
+    FrameResult r;  // the per-frame object of detect --json, with the context applied
+    r.map = maps[k];
+    r.planes.planes.resize(plane_counts[k]);
+    r.timings_ms = timings[k];
+    nlohmann::json fj = detection_frame_json(k, sources[k], r);
+    fj["camera_to_world"] = isometry_to_json(mapped.poses[k]);
+    frames.push_back(fj);
+  }
 
   const nlohmann::json pj = params.to_json();
-  if (!o.quiet) print_summary(m, detect_ms, map_ms, n);
+  if (!o.quiet) print_summary(m, mapped.refinement, detect_ms, map_ms, n);
   if (!m.ok && (!o.ply_path.empty() || !o.report_path.empty()))
     throw InputError(o.in.input, "no map to write: " + m.reason);
   if (!o.json_path.empty())
     write_file_atomically(o.json_path, [&](std::ostream& out) {
-      out << station_map_document(m, pj, frames, o.in.input).dump(2) << "\n";
+      nlohmann::json doc = station_map_document(m, pj, frames, o.in.input);
+      add_refinement(doc, mapped.refinement);
+      out << doc.dump(2) << "\n";
     });
   if (!o.csv_path.empty())
     write_file_atomically(o.csv_path, [&](std::ostream& out) { out << station_map_csv(m); });
@@ -210,6 +258,8 @@ void add_map_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--csv", o->csv_path, "Write one row per station as CSV");
   cmd->add_option("--ply", o->ply_path, "Write the sectioned map as a binary PLY mesh (world frame)");
   cmd->add_option("--report", o->report_path, "Write the inspection report as PDF");
+  cmd->add_flag("--no-pose-refinement", o->no_pose_refinement,
+                "Map with the forward-kinematics (or given) poses as they are");
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");
   cmd->callback([o, &ctx] { run(*o, ctx); });
 }

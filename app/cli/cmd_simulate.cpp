@@ -7,6 +7,7 @@
 #include "core/sim/sim_config.h"
 #include "core/sim/sim_dataset_writer.h"
 #include "core/sim/sim_spec_parse.h"
+#include "core/sim/sim_tum_writer.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -21,6 +22,7 @@ struct SimulateOptions {
   std::optional<int> frames;
   std::optional<long long> seed;
   std::string rgb_format = "png";
+  std::string format = "dataset";  // output layout: dataset (dataset.json) or tum (TUM RGB-D)
   std::string arm;                 // robot preset: joints instead of poses
   std::optional<double> sag;       // arm link sag, deg per metre of reach
   std::optional<std::string> sections, diaphragms, walk, walk_pose;  // lists, parsed in run()
@@ -125,9 +127,15 @@ void run(const SimulateOptions& o, CliContext& ctx) {
   apply_layout(o, c);
   c.validate();  // combinations (e.g. manhole opening vs. a small width)
 
-  write_sim_dataset(o.out_dir, c, [&](int i, int n, const std::string& depth_path) {
+  const SimProgress progress = [&](int i, int n, const std::string& depth_path) {
     if (!o.quiet) std::cout << "frame " << (i + 1) << "/" << n << ": " << depth_path << "\n";
-  });
+  };
+  if (o.format == "tum")
+    write_sim_tum_sequence(o.out_dir, c, progress, [](const std::string& line) {
+      std::cerr << "tunnelmap-cli: note: " << line << "\n";
+    });
+  else
+    write_sim_dataset(o.out_dir, c, progress);
   std::cout << "wrote " << c.frames << " simulated " << c.preset << " frames (";
   if (c.sections.empty()) std::cout << c.width_m << " x " << c.height_m << " m";
   else std::cout << c.sections.size() << (c.sections.size() == 1 ? " section" : " sections");
@@ -173,6 +181,10 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
   sub->add_option("--walk-pose", opt->walk_pose,
                   "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
+  sub->add_option("--format", opt->format,
+                  "Output layout: dataset (dataset.json, default) or tum (TUM RGB-D: depth.txt, "
+                  "rgb.txt, groundtruth.txt)")
+      ->check(CLI::IsMember({"dataset", "tum"}));
   sub->add_flag("--quiet", opt->quiet, "Print only the summary line");
   sub->callback([opt, &ctx] { run(*opt, ctx); });
 }

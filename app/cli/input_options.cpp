@@ -34,14 +34,23 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
 }  // namespace
 
 void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required) {
-  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, dataset folder, or OpenNI2 recording (.oni)")
+  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, dataset folder, TUM RGB-D sequence folder, or OpenNI2 recording (.oni)")
       ->required(input_required);
   cmd->add_option("--params", opt.params_file, "Parameter preset JSON (see resources/presets)");
   cmd->add_option("--set", opt.sets, "Override one parameter: KEY=VALUE (repeatable; see `params`)")
       ->take_all();
-  cmd->add_option("--intrinsics", opt.intrinsics, "Camera intrinsics FX,FY,CX,CY in pixels");
-  cmd->add_option("--depth-scale", opt.depth_scale, "Depth PNG units per metre (default 1000: millimetres)");
+  add_read_options(cmd, opt);
   cmd->add_option("--up", opt.up, "Camera-frame vector towards the roof X,Y,Z (default: from the pose, else image-up)");
+}
+
+void add_read_options(CLI::App* cmd, InputOptions& opt) {
+  cmd->add_option("--intrinsics", opt.intrinsics, "Camera intrinsics FX,FY,CX,CY in pixels");
+  cmd->add_option("--depth-scale", opt.depth_scale,
+                  "Depth PNG units per metre (default 1000: millimetres; TUM sequences 5000)");
+  cmd->add_option("--max-time-diff", opt.max_time_diff,
+                  "TUM sequences: pair depth with colour and ground truth at most S seconds apart (default 0.02)");
+  cmd->add_option("--world-up", opt.world_up,
+                  "World-frame vector towards the roof X,Y,Z for posed frames (default: the dataset's, +Z)");
 }
 
 Parameters InputOptions::parameters() const {
@@ -57,6 +66,7 @@ ReadOptions InputOptions::read_options() const {
     if (!(depth_scale > 0) || !std::isfinite(depth_scale) || depth_scale > 1e7)
       throw ParameterError("--depth-scale must be a positive number of units per metre");
     r.depth_units_per_m = depth_scale;
+    r.depth_scale_given = true;
   }
   if (!intrinsics.empty()) {
     const auto v = parse_numbers(intrinsics, 4, "--intrinsics");
@@ -66,6 +76,18 @@ ReadOptions InputOptions::read_options() const {
     K.fx = v[0], K.fy = v[1], K.cx = v[2], K.cy = v[3];
     r.intrinsics = K;
   }
+  if (max_time_diff) {
+    if (!(*max_time_diff >= 0 && *max_time_diff <= 10))
+      throw ParameterError("--max-time-diff must be 0..10 seconds");
+    r.max_time_diff_s = *max_time_diff;
+  }
+  if (!world_up.empty()) {
+    const auto v = parse_numbers(world_up, 3, "--world-up");
+    const Eigen::Vector3d u(v[0], v[1], v[2]);
+    if (u.norm() < 1e-9) throw ParameterError("--world-up must not be the zero vector");
+    r.world_up = u.normalized();
+  }
+  r.note = [](const std::string& line) { std::fprintf(stderr, "tunnelmap-cli: note: %s\n", line.c_str()); };
   return r;
 }
 

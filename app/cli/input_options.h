@@ -16,19 +16,27 @@ struct InputOptions {
   std::string params_file;
   std::vector<std::string> sets;
   std::string intrinsics;   // "FX,FY,CX,CY"
-  double depth_scale = 0;   // 0 = reader default (1000 for PNG)
+  double depth_scale = 0;   // 0 = reader default (1000 for PNG, 5000 for TUM sequences)
   std::string up;           // "X,Y,Z" camera frame
+  std::optional<double> max_time_diff;  // TUM pairing limit in seconds (default 0.02)
+  std::string world_up;     // "X,Y,Z" world frame, replaces a dataset's up
 
   // Parameters: defaults, then --params FILE, then each --set (ParameterError / InputError).
   Parameters parameters() const;
-  ReadOptions read_options() const;                 // ParameterError for malformed values
+  // ParameterError for malformed values; reader notes (unmatched TUM frames) go to stderr.
+  ReadOptions read_options() const;
   std::optional<Eigen::Vector3d> camera_up() const;  // ParameterError for malformed values
   Pipeline pipeline() const;                         // parameters + up, world up from a dataset
 };
 
-// Registers INPUT and --params/--set/--intrinsics/--depth-scale/--up on `cmd`. INPUT is optional
-// when the command has another source (detect --device): it then checks for one itself.
+// Registers INPUT and --params/--set/--intrinsics/--depth-scale/--up/--max-time-diff/--world-up
+// on `cmd`. INPUT is optional when the command has another source (detect --device): it then
+// checks for one itself.
 void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required = true);
+
+// Only the options that change how a sequence is read: --intrinsics, --depth-scale,
+// --max-time-diff, --world-up (for commands that read but run no pipeline, e.g. convert).
+void add_read_options(CLI::App* cmd, InputOptions& opt);
 
 // Progress bar on stderr when it is a terminal (sequences only).
 class Progress {

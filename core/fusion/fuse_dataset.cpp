@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "core/fusion/fusion_options.h"
-#include "core/mapping/station_map_builder.h"
+#include "core/mapping/posed_sequence.h"
 #include "core/pipeline/pipeline.h"
 #include "core/util/error.h"
 
@@ -22,39 +22,65 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   const int n = static_cast<int>(ds.frames.size());
   if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
 
-  // Pass 1: poses, per-frame detection, volume bounds (frames are not kept: memory stays flat).
+  // Pass 1: poses, per-frame detection and wall samples, each frame's depth box in its own
+  // camera frame (frames are not kept: memory stays flat).
   Pipeline pipeline(params);
   pipeline.set_world_up(ds.up);
-  // The context of a posed sequence: the station map along the tunnel.
-  StationMapBuilder stations(station_map_options(params), tunnel_options(params));
-  Eigen::AlignedBox3d box;
   std::vector<Eigen::Isometry3d> poses;
+  std::vector<TunnelMap> maps(static_cast<std::size_t>(n));
+  std::vector<FrameWalls> walls(static_cast<std::size_t>(n));
+  std::vector<Eigen::AlignedBox3d> boxes(static_cast<std::size_t>(n));
+  FrameResult fr;
   for (int i = 0; i < n; ++i) {
-    const ResolvedPose rp = resolve_frame_pose(ds, static_cast<std::size_t>(i), s.prefer_joints);
+    const std::size_t k = static_cast<std::size_t>(i);
+    const ResolvedPose rp = resolve_frame_pose(ds, k, s.prefer_joints);
     if (!rp.pose)
       throw InputError(ds.json_path, "frames[" + std::to_string(i) +
                                          "] has neither \"pose\" nor \"joints\": fusion needs "
                                          "every camera pose");
-    DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
+    DepthFrame f = ds.load_frame(k);
     f.pose = *rp.pose;
     FusedFrame ff;
     ff.index = i;
     ff.pose_source = rp.source;
-    ff.camera_to_world = *rp.pose;
+    ff.camera_to_world = ff.given_camera_to_world = *rp.pose;
     if (s.detect) {
-      FrameResult fr = pipeline.run(f);
-      stations.add_frame(i, fr, *rp.pose);
-      ff.map = std::move(fr.map);
+      pipeline.run(f, fr);
+      extract_frame_walls(fr, walls[k]);
+      maps[k] = fr.map;
+      maps[k].plane_classes.clear();
+      maps[k].plane_outlier.clear();
+      maps[k].plane_candidate_classes.clear();
     }
-    extend_depth_bounds(f, *rp.pose, fo, box);
+    extend_depth_bounds(f, Eigen::Isometry3d::Identity(), fo, boxes[k]);
     poses.push_back(*rp.pose);
     r.frames.push_back(std::move(ff));
     if (s.progress) s.progress("detect", i + 1, n);
   }
   r.timings_ms["load+detect"] = ms_since(t0);
 
-  // Pass 2: integration.
+  // The map along the tunnel, with the poses refined against it (arm sag), and each frame's
+  // context from it.
+  const auto tm = std::chrono::steady_clock::now();
+  std::vector<int> groups = group_poses(poses, fo.pose_group_m);
+  if (s.detect) {
+    MappedSequence ms = map_posed_sequence(maps, walls, poses, params, s.refine_poses);
+    r.refinement = std::move(ms.refinement);
+    r.stations = std::move(ms.stations);
+    poses = ms.poses;
+    groups = ms.groups;
+  }
+  r.timings_ms["map"] = ms_since(tm);
+
+  // Pass 2: integration with the final poses, in the box of every frame's depth through them.
   const auto t1 = std::chrono::steady_clock::now();
+  Eigen::AlignedBox3d box;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::AlignedBox3d& b = boxes[static_cast<std::size_t>(i)];
+    if (b.isEmpty()) continue;
+    for (int c = 0; c < 8; ++c)
+      box.extend(poses[static_cast<std::size_t>(i)] * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  }
   TsdfOptions to = tsdf_options(fo);
   to.threads = s.threads;
   r.volume = std::make_unique<TsdfVolume>(fusion_grid(box, fo), to);
@@ -65,16 +91,14 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   }
   r.timings_ms["integrate"] = ms_since(t1);
 
-  const std::vector<int> groups = group_poses(poses, fo.pose_group_m);
   std::vector<ScanInput> scans;
   for (std::size_t i = 0; i < r.frames.size(); ++i) {
     r.frames[i].pose_group = groups[i];
+    r.frames[i].camera_to_world = poses[i];
+    r.frames[i].map = std::move(maps[i]);
     scans.push_back({r.frames[i].map, r.frames[i].camera_to_world, r.frames[i].index});
   }
-  if (s.detect) {
-    r.merged = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
-    r.stations = stations.finish(groups);
-  }
+  if (s.detect) r.merged = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
   r.timings_ms["total"] = ms_since(t0);
   return r;
 }

@@ -10,6 +10,7 @@
 #include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/mapping/multi_scan_map.h"
+#include "core/mapping/pose_refinement.h"
 #include "core/mapping/station_map.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/params/parameters.h"
@@ -20,7 +21,8 @@ namespace tunnelmap {
 struct FusedFrame {
   int index = 0;
   PoseSource pose_source = PoseSource::None;
-  Eigen::Isometry3d camera_to_world = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d camera_to_world = Eigen::Isometry3d::Identity();  // refined (fused with)
+  Eigen::Isometry3d given_camera_to_world = Eigen::Isometry3d::Identity();  // explicit or FK
   TunnelMap map;  // per-frame detection, camera frame
   int pose_group = 0;
 };
@@ -28,6 +30,7 @@ struct FusedFrame {
 struct FuseSettings {
   bool prefer_joints = false;  // use FK even where a frame has an explicit pose
   bool detect = true;          // per-frame tunnel detection + merged map
+  bool refine_poses = true;    // correct each pose group against the map (needs detect)
   int threads = 0;             // TSDF integration threads (0 = all cores, at most 8)
   std::function<void(const std::string& stage, int done, int total)> progress;
 };
@@ -37,7 +40,8 @@ struct FusionResult {
   std::vector<FusedFrame> frames;
   MultiScanMap merged;
   StationMap stations;  // the map along the tunnel: sections that change (`fuse --map`)
-  StageTimings timings_ms;  // "load+detect", "integrate", "total"
+  PoseRefinement refinement;  // per pose group correction (ran == false: not refined)
+  StageTimings timings_ms;  // "load+detect", "map" (refinement + station map), "integrate", "total"
 };
 
 // InputError (naming dataset.json and the frame) for a frame without pose and joints.

@@ -6,6 +6,7 @@
 #include "core/io/depth_png.h"
 #include "core/io/json_file.h"
 #include "core/io/read_options.h"
+#include "core/io/tum_sequence.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -142,9 +143,7 @@ DatasetFrameRef parse_frame(const Checker& c, const fs::path& root, const json& 
   return f;
 }
 
-}  // namespace
-
-Dataset read_dataset(const std::string& dir_or_json_path) {
+Dataset read_dataset_json(const std::string& dir_or_json_path) {
   std::error_code ec;
   const fs::path given(dir_or_json_path);
   // exists() is false with an error for a symlink loop or a folder we may not enter.
@@ -197,6 +196,19 @@ Dataset read_dataset(const std::string& dir_or_json_path) {
   return d;
 }
 
+}  // namespace
+
+Dataset read_dataset(const std::string& dir_or_json_path) {
+  return read_dataset(dir_or_json_path, ReadOptions());
+}
+
+Dataset read_dataset(const std::string& dir_or_json_path, const ReadOptions& opt) {
+  Dataset d = is_tum_sequence(dir_or_json_path) ? read_tum_sequence(dir_or_json_path, opt)
+                                                : read_dataset_json(dir_or_json_path);
+  if (opt.world_up) d.up = opt.world_up->normalized();
+  return d;
+}
+
 DepthFrame Dataset::load_frame(std::size_t i) const {
   if (i >= frames.size())
     throw InputError(json_path, "frame index " + std::to_string(i) + " out of range (" +
@@ -204,6 +216,13 @@ DepthFrame Dataset::load_frame(std::size_t i) const {
   const DatasetFrameRef& ref = frames[i];
   const std::string key = "frames[" + std::to_string(i) + "]";
   const auto size_text = [](int w, int h) { return std::to_string(w) + "x" + std::to_string(h); };
+  // dataset.json frames are named by key, TUM frames by their list line.
+  const auto fail = [&](const std::optional<ListOrigin>& origin, const std::string& field,
+                        const std::string& problem) {
+    if (origin)
+      throw InputError(origin->file, "line " + std::to_string(origin->line) + ": " + problem);
+    throw InputError(json_path, "key '" + key + "." + field + "': " + problem);
+  };
 
   ReadOptions opt;
   opt.depth_units_per_m = depth_scale;
@@ -212,22 +231,22 @@ DepthFrame Dataset::load_frame(std::size_t i) const {
   try {
     f = read_depth_png(ref.depth_path, opt);
   } catch (const InputError& e) {
-    throw InputError(json_path, "key '" + key + ".depth': " + e.what());
+    fail(ref.depth_origin, "depth", e.what());
   }
   if (f.width != intrinsics.width || f.height != intrinsics.height)
-    throw InputError(json_path, "key '" + key + ".depth': image is " +
-                                    size_text(f.width, f.height) + " but intrinsics say " +
-                                    size_text(intrinsics.width, intrinsics.height));
+    fail(ref.depth_origin, "depth", "image is " + size_text(f.width, f.height) +
+                                        " but intrinsics say " +
+                                        size_text(intrinsics.width, intrinsics.height));
   if (!ref.rgb_path.empty()) {
     int w = 0, h = 0;
     try {
       f.rgb = read_rgb_image(ref.rgb_path, w, h);
     } catch (const InputError& e) {
-      throw InputError(json_path, "key '" + key + ".rgb': " + e.what());
+      fail(ref.rgb_origin, "rgb", e.what());
     }
     if (w != f.width || h != f.height)
-      throw InputError(json_path, "key '" + key + ".rgb': image is " + size_text(w, h) +
-                                      " but the depth image is " + size_text(f.width, f.height));
+      fail(ref.rgb_origin, "rgb", "image is " + size_text(w, h) + " but the depth image is " +
+                                      size_text(f.width, f.height));
   }
   f.intrinsics = intrinsics;
   f.pose = ref.pose;

@@ -1,6 +1,7 @@
 #pragma once
 // Dataset folders: a dataset.json ("tunnelmap-dataset/1") listing depth frames with optional
-// colour, ground-truth surface labels, camera poses and arm joints. See docs/dataset-format.md.
+// colour, ground-truth surface labels, camera poses and arm joints, or a TUM RGB-D sequence
+// (depth.txt, rgb.txt, groundtruth.txt) read into the same structure. See docs/dataset-format.md.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -10,10 +11,17 @@
 
 #include "core/frame/depth_frame.h"
 #include "core/frame/intrinsics.h"
+#include "core/io/read_options.h"
 
 namespace tunnelmap {
 
 constexpr const char* kDatasetFormat = "tunnelmap-dataset/1";
+
+// Where a path came from in a list file (TUM sequences), so that load errors name that line.
+struct ListOrigin {
+  std::string file;
+  int line = 0;
+};
 
 struct DatasetFrameRef {
   std::string depth_path, rgb_path, gt_path;  // resolved, inside the dataset folder; rgb/gt may be empty
@@ -21,6 +29,14 @@ struct DatasetFrameRef {
   std::vector<double> joints;
   double timestamp_s = 0.0;
   nlohmann::json raw;                         // the frame's object as written (extra keys kept)
+  std::optional<ListOrigin> depth_origin, rgb_origin;  // TUM lists; none for dataset.json
+};
+
+// Depth frames of a TUM sequence that found no colour image or no ground truth within the time
+// limit: they are kept (without colour / without pose) and counted here.
+struct UnmatchedFrames {
+  std::size_t rgb = 0, pose = 0;
+  std::vector<std::string> notes;  // one line per such frame
 };
 
 struct Dataset {
@@ -31,6 +47,7 @@ struct Dataset {
   std::vector<DatasetFrameRef> frames;
   std::optional<double> gt_width_m, gt_height_m;
   nlohmann::json robot, ground_truth, raw;     // null when absent
+  UnmatchedFrames unmatched;                   // TUM sequences only
 
   // Depth + rgb (if any; must match the size) + pose + joints, validated. InputError naming
   // dataset.json and the frame index on any problem.
@@ -39,8 +56,12 @@ struct Dataset {
   std::vector<std::uint16_t> load_gt_surfaces(std::size_t i) const;
 };
 
-// Accepts the dataset folder or its dataset.json. Validates the whole file (keys, types, poses,
-// intrinsics, paths staying inside the folder, files existing); InputError on the first problem.
+// Accepts the dataset folder or its dataset.json, or a TUM RGB-D sequence (a folder with
+// depth.txt and no dataset.json, or its depth.txt). Validates the whole input (keys, types,
+// poses, intrinsics, paths staying inside the folder, files existing); InputError on the first
+// problem. `opt` reaches TUM sequences (intrinsics, depth scale, time limit) and sets the world
+// up of both layouts when opt.world_up is given; a dataset.json keeps its own intrinsics and scale.
 Dataset read_dataset(const std::string& dir_or_json_path);
+Dataset read_dataset(const std::string& dir_or_json_path, const ReadOptions& opt);
 
 }  // namespace tunnelmap

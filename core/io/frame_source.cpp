@@ -10,6 +10,7 @@
 
 #include "core/io/depth_png.h"
 #include "core/io/organized_pcd.h"
+#include "core/io/tum_sequence.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -96,10 +97,11 @@ std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOpti
   std::error_code ec;
   if (input.empty()) throw InputError("", "no input given");
   if (!fs::exists(input, ec)) throw InputError(input, ec ? "cannot access: " + ec.message() : "not found");
+  if (is_tum_sequence(input)) return std::make_unique<DatasetSource>(read_dataset(input, opt));
   if (fs::is_directory(input, ec)) {
     if (!fs::exists(fs::path(input) / "dataset.json", ec))
       throw InputError(input, "folder has no dataset.json (expected a dataset folder)");
-    return std::make_unique<DatasetSource>(read_dataset(input));
+    return std::make_unique<DatasetSource>(read_dataset(input, opt));
   }
   const std::string ext = lower(fs::path(input).extension().string());
   FrameSourceFactory factory;
@@ -116,7 +118,7 @@ std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOpti
                                     : sniff(input);
   switch (kind) {
     case InputKind::Dataset:
-      return std::make_unique<DatasetSource>(read_dataset(input));
+      return std::make_unique<DatasetSource>(read_dataset(input, opt));
     case InputKind::DepthPng:
     case InputKind::Pcd:
       return std::make_unique<SingleFileSource>(input, kind, opt);

@@ -1,6 +1,6 @@
 #pragma once
-// One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, or a
-// dataset folder (or its dataset.json).
+// One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, a
+// dataset folder (or its dataset.json), or a TUM RGB-D sequence (folder with depth.txt).
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -22,7 +22,8 @@ class FrameSource {
 };
 
 // Chooses the reader by extension (.png, .pcd, .json, folder), else by the file's first bytes.
-// A dataset is read and validated here; its own depth_scale and intrinsics win over `opt`.
+// A dataset is read and validated here; its own depth_scale and intrinsics win over `opt`
+// (opt.world_up still replaces its up). A TUM sequence takes all of `opt` (read_tum_sequence).
 // InputError for a missing input or an unknown type.
 std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOptions& opt);
 

@@ -1,6 +1,9 @@
 #pragma once
-// Options shared by all input readers (from --depth-scale and --intrinsics).
+// Options shared by all input readers (from --depth-scale, --intrinsics and the sequence flags).
+#include <Eigen/Core>
+#include <functional>
 #include <optional>
+#include <string>
 
 #include "core/frame/intrinsics.h"
 
@@ -8,7 +11,14 @@ namespace tunnelmap {
 
 struct ReadOptions {
   double depth_units_per_m = 1000.0;     // depth PNG units per metre (millimetres by default)
+  // True when the user gave --depth-scale: readers with a default of their own (a TUM
+  // sequence's 5000) use depth_units_per_m only then.
+  bool depth_scale_given = false;
   std::optional<Intrinsics> intrinsics;  // FX,FY,CX,CY given by the user; width/height from the image
+  double max_time_diff_s = 0.02;         // TUM sequences: depth/colour/ground-truth pairing limit
+  std::optional<Eigen::Vector3d> world_up;  // replaces a dataset's world up (unit) when set
+  // One-line notes a reader wants the user to see (e.g. unmatched TUM frames); null = silent.
+  std::function<void(const std::string&)> note;
 };
 
 // PrimeSense VGA intrinsics scaled to an image of the given size (used when none are given).

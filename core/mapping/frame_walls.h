@@ -20,17 +20,36 @@ struct WallSample {
   int points = 0;
   int plane = 0;               // plane id (label) in the frame
   std::uint8_t wall = 0;       // 0-3: measured wall; kTransverseSample
-  float inset_m = 0.0f;        // how far the plane lies inside its wall's outer surface in this
-                               // frame (the middle plate: its thickness; an edge band: ~0)
+  float inset_m = 0.0f;        // how far the plane lies inside its wall's outer surface there
+                               // (the middle plate: its thickness; an edge band: 0)
+  bool on_surface = true;      // the inset is known (false: a plane of no zone of the wall)
 };
 
 struct FrameWalls {
   std::vector<WallSample> samples;
 };
 
+struct FrameWallsOptions {
+  int block_px = 8;
+  int min_transverse_points = 300;  // a plane across the axis needs this many to be a face
+  // Insets are found part by part: the frame's stations (`station_m` along its own axis) are
+  // split where its cross-section changes (`section_change_m` over `min_section_stations`),
+  // and within a part the planes' positions on a wall are clustered (`zone_gap_m`); the
+  // outermost cluster with `min_part_points` is the outer surface, and planes up to
+  // `max_inset_m` inside it are its zones (a plate). Planes further in belong to no zone.
+  double station_m = 0.10;
+  double section_change_m = 0.015;
+  int min_section_stations = 4;
+  double max_split_distance_m = 3.0;  // stations beyond this along the axis follow the last part
+  double zone_gap_m = 0.005;
+  int min_zone_points = 60;   // per station, to see where the cross-section changes
+  int min_part_points = 300;  // per part, for the outer surface (the detector's zone support)
+  double max_inset_m = 0.03;
+};
+
 // The samples of `r` (its map must come from r.planes). Planes of walls the frame measured,
-// edge-on planes excepted, and planes across the axis of at least `min_transverse_points`.
-void extract_frame_walls(const FrameResult& r, FrameWalls& out, int block_px = 8,
-                         int min_transverse_points = 300);
+// edge-on planes excepted, and planes across the axis of at least min_transverse_points.
+void extract_frame_walls(const FrameResult& r, FrameWalls& out,
+                         const FrameWallsOptions& options = FrameWallsOptions());
 
 }  // namespace tunnelmap

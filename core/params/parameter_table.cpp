@@ -59,6 +59,13 @@ const std::vector<ParameterSpec>& parameter_table() {
     {"tunnel.min_cluster_points", "points", 300, 10, 100000, 10, true, Stage::Tunnel,
      "Min zone support",
      "Fewest points a zone cluster needs to bound the tunnel, and a plane needs to link two zone positions"},
+    {"tunnel.zone_support_ref_m", "m", 0.0, 0.0, 10.0, 0.05, false, Stage::Tunnel,
+     "Zone support distance",
+     "Beyond this distance a zone's support is Min zone support * (ref/d)^2, at least 40 points (a patch "
+     "covers ~1/d^2 pixels); 0 = the same support at every distance"},
+    {"tunnel.zone_gap_ref_m", "m", 0.0, 0.0, 10.0, 0.05, false, Stage::Tunnel, "Zone gap distance",
+     "Beyond this distance the zone cluster gap is Zone cluster gap * (d/ref)^2 (depth noise grows "
+     "~d^2); 0 = the same gap at every distance"},
     {"tunnel.context_tolerance_mm", "mm", 40.0, 1.0, 500.0, 1.0, false, Stage::Tunnel,
      "Context tolerance",
      "Max width/height change from the previous scans' context in a sequence (paper: 40 mm)"},

@@ -39,6 +39,8 @@ TunnelOptions tunnel_options(const Parameters& p) {
   o.outlier_max_deg = p.get("tunnel.outlier_max_deg");
   o.zone_cluster_m = p.get("tunnel.zone_cluster_mm") / 1000.0;
   o.min_cluster_points = p.get_int("tunnel.min_cluster_points");
+  o.zone_support_ref_m = p.get("tunnel.zone_support_ref_m");
+  o.zone_gap_ref_m = p.get("tunnel.zone_gap_ref_m");
   o.context_tolerance_m = p.get("tunnel.context_tolerance_mm") / 1000.0;
   o.max_pair_angle_deg = p.get("tunnel.max_pair_angle_deg");
   o.width_min_m = p.get("tunnel.width_min_m");

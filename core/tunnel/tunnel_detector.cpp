@@ -252,6 +252,13 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   const Eigen::Vector3d template_normal[4] = {tf.right, -tf.right, -tf.up, tf.up};
 
   // Step 4: zone positions with the common wall normal, clustered; outermost supported zone.
+  // Support and gap may scale with each zone's distance from the camera (zone_support.h).
+  ZoneScaling zone_scaling;
+  zone_scaling.min_points = opt.min_cluster_points;
+  zone_scaling.support_ref_m = opt.zone_support_ref_m;
+  zone_scaling.gap_m = opt.zone_cluster_m;
+  zone_scaling.gap_ref_m = opt.zone_gap_ref_m;
+  check_zone_scaling(zone_scaling);
   double offsets[4] = {0, 0, 0, 0};
   bool measured[4] = {false, false, false, false};
   // Visible span across the tunnel of every classified plane: bounds the rectangles of the
@@ -284,12 +291,23 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
       positions.push_back({-w.normal.dot(p.centroid), p.points});
     }
     if (!seen[ci]) continue;
-    cluster_zone_positions(positions, opt.zone_cluster_m, opt.min_cluster_points, w.clusters);
-    const int best = outermost_supported_cluster(w.clusters, opt.min_cluster_points);
+    cluster_zone_positions(positions, zone_scaling, w.clusters);
+    const int best = outermost_supported_cluster(w.clusters, zone_scaling);
     if (best < 0) {
       if (!weak.empty()) weak += "; ";
-      append_text(weak, "%s wall: no zone cluster with >= %d points", wall_class_name(c),
-                  opt.min_cluster_points);
+      if (zone_scaling.support_ref_m > 0) {  // the support asked for depends on the distance
+        const ZoneCluster* largest = nullptr;
+        for (const ZoneCluster& z : w.clusters)
+          if (!largest || z.points > largest->points) largest = &z;
+        append_text(weak,
+                    "%s wall: no zone cluster with enough points (largest %d at %.2f m, needs %d)",
+                    wall_class_name(c), largest ? largest->points : 0,
+                    largest ? largest->offset_m : 0.0,
+                    largest ? zone_scaling.support_at(largest->offset_m) : opt.min_cluster_points);
+      } else {
+        append_text(weak, "%s wall: no zone cluster with >= %d points", wall_class_name(c),
+                    opt.min_cluster_points);
+      }
       continue;
     }
     measured[ci] = true;

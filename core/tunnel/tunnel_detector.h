@@ -15,6 +15,9 @@ struct TunnelOptions {
   double outlier_max_deg = 8.0;
   double zone_cluster_m = 0.010;
   int min_cluster_points = 300;
+  // Zone support / gap scaling with the wall's distance (zone_support.h); 0 = off.
+  double zone_support_ref_m = 0.0;
+  double zone_gap_ref_m = 0.0;
   double context_tolerance_m = 0.040;
   double max_pair_angle_deg = 10.0;
   double width_min_m = 0.3, width_max_m = 3.0;

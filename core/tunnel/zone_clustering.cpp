@@ -13,10 +13,18 @@ std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positi
 
 void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, int anchor_points,
                             std::vector<ZoneCluster>& out) {
+  ZoneScaling fixed;
+  fixed.min_points = anchor_points;
+  fixed.gap_m = gap_m;
+  cluster_zone_positions(positions, fixed, out);
+}
+
+void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
+                            std::vector<ZoneCluster>& out) {
   std::sort(positions.begin(), positions.end(),
             [](const ZonePosition& a, const ZonePosition& b) { return a.offset_m > b.offset_m; });
   const size_t n = positions.size();
-  // Per-thread scratch reused frame after frame (issue 7: no allocation per frame).
+  // Per-thread scratch reused frame after frame (no allocation per frame).
   thread_local std::vector<int> cluster_of;
   thread_local std::vector<double> lo, hi;  // offset range of each cluster's linking planes
   thread_local std::vector<double> weighted_sum, weight;
@@ -28,7 +36,8 @@ void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, 
     int last = -1;
     for (size_t i = 0; i < n; ++i) {
       if (!is_member(i)) continue;
-      if (last < 0 || positions[last].offset_m - positions[i].offset_m > gap_m) {
+      if (last < 0 || positions[last].offset_m - positions[i].offset_m >
+                          scaling.gap_at(positions[last].offset_m)) {
         lo.push_back(positions[i].offset_m);
         hi.push_back(positions[i].offset_m);
       }
@@ -39,12 +48,12 @@ void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, 
   };
   // 1. Anchors link zones; 2. small planes join the nearest anchor cluster within the gap
   // (they cannot bridge two zones); 3. small planes left over link among themselves.
-  link([&](size_t i) { return positions[i].points >= anchor_points; });
+  link([&](size_t i) { return positions[i].points >= scaling.support_at(positions[i].offset_m); });
   const size_t anchored = lo.size();
   for (size_t i = 0; i < n; ++i) {
     if (cluster_of[i] >= 0) continue;
     const double x = positions[i].offset_m;
-    double best = gap_m;
+    double best = scaling.gap_at(x);
     for (size_t c = 0; c < anchored; ++c) {
       const double d = x > hi[c] ? x - hi[c] : (x < lo[c] ? lo[c] - x : 0.0);
       if (d <= best) best = d, cluster_of[i] = static_cast<int>(c);
@@ -72,6 +81,15 @@ int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int mi
   int best = -1;
   for (size_t i = 0; i < clusters.size(); ++i)
     if (clusters[i].points >= min_points &&
+        (best < 0 || clusters[i].offset_m > clusters[best].offset_m))
+      best = static_cast<int>(i);
+  return best;
+}
+
+int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, const ZoneScaling& scaling) {
+  int best = -1;
+  for (size_t i = 0; i < clusters.size(); ++i)
+    if (clusters[i].points >= scaling.support_at(clusters[i].offset_m) &&
         (best < 0 || clusters[i].offset_m > clusters[best].offset_m))
       best = static_cast<int>(i);
   return best;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/tunnel/tunnel_map.h"
+#include "core/tunnel/zone_support.h"
 
 namespace tunnelmap {
 
@@ -23,9 +24,16 @@ std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positi
 // Sorts `positions` in place (outermost first).
 void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, int anchor_points,
                             std::vector<ZoneCluster>& out);
+// The same with gap and anchor support taken at each plane's offset (zone_support.h): two
+// neighbouring positions are split by the gap at the outer one, a plane is an anchor when it has
+// scaling.support_at(its offset) points. Unscaled (both references 0) it is the one above.
+void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
+                            std::vector<ZoneCluster>& out);
 
 // Index into `clusters` of the outermost cluster with at least `min_points` points, or -1.
 int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, int min_points);
+// The same with the support each cluster needs at its own offset.
+int outermost_supported_cluster(const std::vector<ZoneCluster>& clusters, const ZoneScaling& scaling);
 
 // Symmetric zone prior (paper 2.2: "all zones are symmetric about the tunnel axis", "zones
 // associated with each wall are a plane shifted by small distances"). The edge-to-middle step a

@@ -147,8 +147,28 @@ def json_seeds():
             put("preset_json", f, src.read())
 
 
+# ------------------------------------------------------------------ TUM lists
+def tum_seeds():
+    depth = ("# depth maps\n# file: 'rgbd_dataset_freiburg1_xyz.bag'\n# timestamp filename\n"
+             "1305031102.160407 depth/1305031102.160407.png\n1305031102.194330 depth/1305031102.194330.png\n"
+             "1305031102.226738 depth/1305031102.226738.png\n")
+    gt = ("# ground truth trajectory\n# timestamp tx ty tz qx qy qz qw\n"
+          "1305031102.1500 1.3405 0.6266 1.6575 0.6574 0.6126 -0.2949 -0.3248\n"
+          "1305031102.1900 1.3397 0.6256 1.6579 0.6583 0.6126 -0.2932 -0.3241\n"
+          "1305031102.2300 1.3384 0.6255 1.6585 0.6589 0.6114 -0.2915 -0.3260\n")
+    put("tum_list", "depth_list.txt", depth)
+    put("tum_list", "groundtruth.txt", gt)
+    put("tum_list", "paired.txt", depth + "%%\n" + gt)
+    put("tum_list", "crlf.txt", depth.replace("\n", "\r\n") + "%%\n" + gt.replace("\n", "\r\n"))
+    put("tum_list", "not_increasing.txt", "2.0 depth/a.png\n1.0 depth/b.png\n%%\n2.0 0 0 0 0 0 0 1\n1.0 0 0 0 0 0 0 1\n")
+    put("tum_list", "bad_quaternion.txt", "1.0 depth/a.png\n%%\n1.0 0 0 0 0 0 0 2\n2.0 0 0 0 nan 0 0 1\n")
+    put("tum_list", "fields.txt", "1.0\n2.0 a b\n%%\n1.0 0 0 0 0 0 1\n")
+    put("tum_list", "huge_times.txt", "-1e308 a\n1e308 b\n%%\n-1e308 1e9 -1e9 1e9 0 0 0 1\n1e308 -1e9 1e9 -1e9 1 0 0 0\n")
+    put("tum_list", "huge_translation.txt", "1 a\n%%\n1 1e300 0 0 0 0 0 1\n")
+
+
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--map-ply")
     a = ap.parse_args()
-    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds()
+    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds()

@@ -1,0 +1,33 @@
+#include "core/mapping/posed_sequence.h"
+
+#include <chrono>
+
+#include "core/fusion/fusion_options.h"
+#include "core/mapping/multi_scan_map.h"
+#include "core/mapping/station_map_builder.h"
+
+namespace tunnelmap {
+
+MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vector<FrameWalls>& walls,
+                                  const std::vector<Eigen::Isometry3d>& poses,
+                                  const Parameters& params, bool refine) {
+  const auto t0 = std::chrono::steady_clock::now();
+  MappedSequence out;
+  out.groups = group_poses(poses, fusion_options(params).pose_group_m);
+  out.poses = poses;
+  const StationMapOptions so = station_map_options(params);
+  if (refine) {
+    PoseRefinementOptions ro;
+    ro.station_step_m = so.station_step_m;
+    out.refinement = refine_poses(maps, walls, poses, out.groups, ro);
+    if (out.refinement.ran) out.poses = out.refinement.poses;
+  }
+  StationMapBuilder builder(so, tunnel_options(params));
+  for (std::size_t i = 0; i < maps.size(); ++i)
+    builder.add_frame(static_cast<int>(i), maps[i], walls[i], out.poses[i]);
+  out.stations = builder.finish(out.groups);
+  out.map_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace tunnelmap
