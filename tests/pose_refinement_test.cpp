@@ -17,6 +17,7 @@
 #include "core/sim/sim_dataset_writer.h"
 #include "core/util/error.h"
 #include "mesh/tsdf_mesher.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
 
 namespace tunnelmap {
@@ -318,6 +319,47 @@ TEST_F(SagFusion, TheRefinedDatasetIsReadLikeAnyOther) {
   EXPECT_EQ(back.load_frame(3).depth, ds.load_frame(3).depth);
   // Not over an existing dataset.
   EXPECT_THROW(write_dataset_with_poses(ds, poses, out), InputError);
+}
+
+TEST_F(SagFusion, FuseCliReportsEachGroupsCorrectionAndWritesTheRefinedDataset) {
+  const std::string data = dir->file("sag2"), json = dir->file("fuse.json");
+  const std::string out = dir->file("cli_refined");
+  const testing::CliRun run = testing::run_cli(
+      "fuse " + data + " --set fusion.voxel_mm=20 --json " + json + " --refined-dataset " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("refined by"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("after one rigid alignment"), std::string::npos) << run.out;
+  const nlohmann::json j = nlohmann::json::parse(testing::slurp(json));
+  EXPECT_TRUE(j["pose_refinement"]["ran"].get<bool>());
+  ASSERT_EQ(j["poses"].size(), 3u);
+  for (const auto& p : j["poses"]) {
+    const auto& r = p["refinement"];
+    ASSERT_TRUE(r.is_object()) << p.dump();
+    EXPECT_GE(r["rotation_deg"].get<double>(), 0.0);
+    EXPECT_LT(r["rotation_deg"].get<double>(), 2.0);
+    EXPECT_LT(r["translation_mm"].get<double>(), 60.0);
+    EXPECT_TRUE(r["constrained"].is_array());
+    EXPECT_NE(std::find(r["constrained"].begin(), r["constrained"].end(), "yaw"), r["constrained"].end());
+  }
+  // The refined dataset is read by every command, with the poses the JSON reports.
+  const Dataset back = read_dataset(out);
+  const nlohmann::json& f0 = j["frames"][0];
+  ASSERT_TRUE(back.frames[0].pose);
+  EXPECT_LT((back.frames[0].pose->matrix() -
+             isometry_from_json(f0["camera_to_world"], "test", "camera_to_world").matrix()).norm(), 1e-9);
+  const testing::CliRun detect = testing::run_cli("detect " + out + " --quiet");
+  EXPECT_EQ(detect.exit_code, 0) << detect.err;
+  // Not refined: no correction, the given poses are the fused ones.
+  const testing::CliRun plain = testing::run_cli("fuse " + data + " --set fusion.voxel_mm=20 --no-pose-refinement --json " + json);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const nlohmann::json k = nlohmann::json::parse(testing::slurp(json));
+  EXPECT_FALSE(k["pose_refinement"]["ran"].get<bool>());
+  for (const auto& p : k["poses"]) EXPECT_TRUE(p["refinement"].is_null());
+  EXPECT_EQ(k["frames"][0]["camera_to_world"], k["frames"][0]["given_camera_to_world"]);
+  // A refined dataset never overwrites anything.
+  const testing::CliRun again = testing::run_cli("fuse " + data + " --set fusion.voxel_mm=20 --refined-dataset " + out);
+  EXPECT_EQ(again.exit_code, 3);
+  EXPECT_NE(again.err.find("must be new or empty"), std::string::npos) << again.err;
 }
 
 }  // namespace

@@ -9,14 +9,34 @@
 
 #include "core/io/dataset.h"
 #include "core/mapping/multi_scan_map.h"
+#include "core/mapping/pose_refinement.h"
 #include "core/params/parameters.h"
 #include "ui/scene/scene_geometry.h"
 
 namespace tunnelmap::ui {
 
+constexpr double kFusedFrustumDepthM = 0.3;  // depth of the drawn camera frusta
+
+// One arm pose (pose group) of the fused sequence, placed by its first frame.
+struct FusedPoseGroup {
+  int group = 0;
+  std::vector<int> frames;
+  bool rescan = false;
+  std::string message;                      // "ok" or "move and rescan: <reason>"
+  Eigen::Isometry3d fused_pose = Eigen::Isometry3d::Identity();  // camera to world, fused with
+  Eigen::Isometry3d given_pose = Eigen::Isometry3d::Identity();  // forward kinematics / explicit
+  bool corrected = false;                   // pose refinement gave it a correction
+  PoseCorrection correction;
+};
+
 struct FusedScene {
-  scene::SceneGeometry geometry;  // world frame; cloud and planes empty
+  scene::SceneGeometry geometry;  // world frame, at the fused poses; cloud and planes empty
+  // The same mesh with the frusta and the merged map at the given (forward-kinematics) poses,
+  // built on the worker so that switching between the two only swaps inputs.
+  scene::SceneGeometry given_geometry;
   MultiScanMap merged;
+  bool refined = false;  // the poses were refined: the two geometries differ
+  std::vector<FusedPoseGroup> groups;
   int frames = 0;
   int frusta = 0;  // one per pose group
   long long triangles = 0;
@@ -29,7 +49,9 @@ struct FusionCancelled : std::runtime_error {
 
 // `progress(done, total)` after each frame of each pass; throws FusionCancelled once `cancel`
 // is set (checked at every progress step). InputError for frames without pose or joints.
+// `refine_poses` false fuses at the given poses (FuseSettings::refine_poses).
 FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
-                             const std::function<void(int, int)>& progress, const std::atomic<bool>& cancel);
+                             const std::function<void(int, int)>& progress, const std::atomic<bool>& cancel,
+                             bool refine_poses = true);
 
 }  // namespace tunnelmap::ui

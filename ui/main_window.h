@@ -8,12 +8,16 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include "ui/pipeline_runner.h"
 
+class QAction;
 class QActionGroup;
 class QComboBox;
 class QLabel;
@@ -29,6 +33,7 @@ class ParameterPanel;
 class ResultsPanel;
 class TimelineWidget;
 class View3DWidget;
+struct FusedScene;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -66,6 +71,13 @@ class MainWindow : public QMainWindow {
   // Processing > Fuse sequence (posed datasets): TSDF mesh, merged map and one frustum per arm
   // pose, in the world frame, on a worker thread with progress and cancel.
   void fuse_sequence();
+  // View > Refined poses (`refinedPoses`, enabled while a fused result whose poses were refined
+  // is shown): on, the frusta and merged map at the refined poses the mesh was fused with; off,
+  // at the forward-kinematics poses, and the mesh re-fused with them (once, on the worker).
+  void show_refined_poses(bool refined);
+  bool refined_poses_shown() const;
+  // Camera centres of the frusta shown in the fused view (world frame), one per pose group.
+  std::vector<Eigen::Vector3d> fused_frustum_centres() const;
   int fused_frusta() const { return fused_frusta_; }
   long long fused_triangles() const { return fused_triangles_; }
   void cancel_sequence() { cancel_.store(true); }
@@ -112,6 +124,9 @@ class MainWindow : public QMainWindow {
   void show_views(const RunOutcome& outcome);  // swaps the outcome into the 3D and depth views
   void on_live_frame(const RunOutcome& outcome);
   void update_device_actions();
+  void start_fusion(bool refine_poses);
+  void show_fused(bool reset_camera);  // the fused result at the poses View > Refined poses chooses
+  void leave_fused_view();
 
   View3DWidget* view3d_;
   DepthViewWidget* depth_view_;
@@ -147,6 +162,10 @@ class MainWindow : public QMainWindow {
   int fused_frusta_ = 0;
   long long fused_triangles_ = 0;
   QFuture<void> sequence_future_;
+  std::shared_ptr<FusedScene> fused_;  // the last fusion (refined poses when refinement ran)
+  bool fused_shown_ = false;           // the 3D view shows it (not a single frame)
+  bool given_mesh_ = false;            // fused_->given_geometry holds a mesh fused at given poses
+  QAction* refined_action_ = nullptr;
 };
 
 }  // namespace tunnelmap::ui

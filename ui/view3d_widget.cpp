@@ -1,6 +1,7 @@
 #include "ui/view3d_widget.h"
 
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkTextProperty.h>
 
 namespace tunnelmap::ui {
 
@@ -41,12 +42,16 @@ void View3DWidget::finish_update(bool reset_camera) {
 
 void View3DWidget::clear() {
   scene_.clear();
+  for (auto& a : labels_) scene_.renderer()->RemoveActor(a);
+  labels_.clear();
   renderWindow()->Render();
   update();
 }
 
 void View3DWidget::set_layer_visible(scene::Layer layer, bool visible) {
   scene_.set_layer_visible(layer, visible);
+  if (layer == scene::Layer::Frustum)
+    for (auto& a : labels_) a->SetVisibility(visible);
   renderWindow()->Render();
   update();
 }
@@ -55,6 +60,35 @@ void View3DWidget::apply_view(scene::ViewPreset view) {
   scene_.apply_view(view);
   renderWindow()->Render();
   update();
+}
+
+void View3DWidget::set_labels(const std::vector<Label>& labels) {
+  for (auto& a : labels_) scene_.renderer()->RemoveActor(a);
+  labels_.clear();
+  for (const Label& l : labels) {
+    auto a = vtkSmartPointer<vtkBillboardTextActor3D>::New();
+    a->SetInput(l.text.toUtf8().constData());
+    a->SetPosition(l.position.x(), l.position.y(), l.position.z());
+    a->SetDisplayOffset(0, 8);  // just above the point, centred: less often off the view's edge
+    vtkTextProperty* t = a->GetTextProperty();
+    t->SetJustificationToCentered();
+    t->SetFontSize(13);
+    t->SetColor(1.0, 1.0, 1.0);
+    t->SetBackgroundColor(0.1, 0.1, 0.15);
+    t->SetBackgroundOpacity(0.7);  // readable over the mesh
+    t->SetFrame(false);
+    a->SetVisibility(scene_.layer_visible(scene::Layer::Frustum));
+    scene_.renderer()->AddActor(a);
+    labels_.push_back(a);
+  }
+  renderWindow()->Render();
+  update();
+}
+
+QStringList View3DWidget::label_texts() const {
+  QStringList out;
+  for (const auto& a : labels_) out << QString::fromUtf8(a->GetInput());
+  return out;
 }
 
 }  // namespace tunnelmap::ui

@@ -1,7 +1,12 @@
 #pragma once
 // The 3D view: VTK's Qt widget showing the shared TunnelScene (ui/scene), with layer toggles and
 // camera presets driven from the main window's View menu.
+#include <QStringList>
 #include <QVTKOpenGLNativeWidget.h>
+#include <vector>
+
+#include <Eigen/Core>
+#include <vtkBillboardTextActor3D.h>
 
 #include "ui/scene/processed_frame.h"
 #include "ui/scene/tunnel_scene.h"
@@ -24,10 +29,20 @@ class View3DWidget : public QVTKOpenGLNativeWidget {
   void set_layer_visible(scene::Layer layer, bool visible);
   void apply_view(scene::ViewPreset view);
 
+  // Small screen-facing text labels at world points (e.g. one per camera frustum), shown with
+  // the frustum layer; an empty list removes them.
+  struct Label {
+    Eigen::Vector3d position;
+    QString text;
+  };
+  void set_labels(const std::vector<Label>& labels);
+  QStringList label_texts() const;
+
  private:
   void finish_update(bool reset_camera);
 
   scene::TunnelScene scene_;
+  std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> labels_;
 };
 
 }  // namespace tunnelmap::ui

@@ -114,8 +114,8 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
   for (const TunnelMap& t : maps) {
     axis += t.axis_dir.dot(maps[0].axis_dir) < 0 ? -t.axis_dir : t.axis_dir;
     up += t.up;
-    widths.push_back(t.width_m);
-    heights.push_back(t.height_m);
+    if (t.has_width()) widths.push_back(t.width_m);  // a partial map may leave one unknown
+    if (t.has_height()) heights.push_back(t.height_m);
   }
   axis.normalize();
   up = (up - axis * axis.dot(up)).normalized();
@@ -138,10 +138,13 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
   m.reason = "merged " + std::to_string(maps.size()) + " frames";
   m.width_m = median(widths);
   m.height_m = median(heights);
-  out.width_spread_m = *std::max_element(widths.begin(), widths.end()) -
-                       *std::min_element(widths.begin(), widths.end());
-  out.height_spread_m = *std::max_element(heights.begin(), heights.end()) -
-                        *std::min_element(heights.begin(), heights.end());
+  m.width_source = widths.empty() ? DimensionSource::Unseen : DimensionSource::Measured;
+  m.height_source = heights.empty() ? DimensionSource::Unseen : DimensionSource::Measured;
+  const auto spread = [](const std::vector<double>& v) {
+    return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+  };
+  out.width_spread_m = spread(widths);
+  out.height_spread_m = spread(heights);
   m.axis_point = centre;
   m.axis_dir = axis;
   m.up = up;
@@ -167,6 +170,7 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
       const Wall& fw = t.walls[c];
       if (!fw.found) continue;
       w.found = true;
+      w.source = DimensionSource::Measured;
       w.inlier_planes += fw.inlier_planes;
       w.outlier_planes += fw.outlier_planes;
       for (const ZoneCluster& z : fw.clusters) {
