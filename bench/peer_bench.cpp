@@ -1,4 +1,4 @@
-// The peers of issue 7 on the same frames as TunnelMap, one thread: PCL's
+// The peer implementations on the same frames as TunnelMap, one thread: PCL's
 // IntegralImageNormalEstimation + OrganizedMultiPlaneSegmentation and OpenCV contrib's
 // RgbdNormals + RgbdPlane, stage by stage and in total, with plane recall/precision against
 // the simulator's true surfaces (bench/plane_quality.h).

@@ -71,7 +71,7 @@ void plane_extraction(benchmark::State& state, int grid_step, int edge_on_pass =
   tunnelmap::bench::set_plane_counters(state, bench_frames()[state.range(0)], planes);
   state.SetLabel(bench_frames()[state.range(0)].name);
 }
-// The default: issue 7's coarse-to-fine path (grow on every other pixel, assign the rest by eq. 2).
+// The default: the coarse-to-fine path (grow on every other pixel, assign the rest by eq. 2).
 void BM_PlaneExtraction(benchmark::State& state) { plane_extraction(state, 0); }
 // The default without its edge-on pass (what it costs, and what it finds: docs/recall.md).
 void BM_PlaneExtractionNoEdgeOnPass(benchmark::State& state) { plane_extraction(state, 0, 0); }

@@ -9,7 +9,7 @@
 
 namespace tunnelmap::bench {
 
-// Issue 7's definition. A true surface counts when its visible part (pixels with a 3-D point
+// The recall definition of docs/recall.md. A true surface counts when its visible part (pixels with a 3-D point
 // inside the default cloud range) has at least grow.min_points pixels (40) and an area of at
 // least grow.min_area_m2 (0.004 m^2) on the surface -- PG&C's own minimum plane size, from the
 // GrowOptions defaults. A detected plane is correct when more than 50 % of its pixels lie on

@@ -1,4 +1,4 @@
-// tunnelmap_plane_recall: issue 7's plane recall and precision on simulated frames, with a
+// tunnelmap_plane_recall: plane recall and precision on simulated frames, with a
 // breakdown of the missed surfaces (scripts/recall.sh writes docs/recall.md with it).
 // Every preset x grid step runs the full pipeline on the simulator's frames of each seed
 // (seed 100*s + 1 for lab, 100*s + 2 for field, s = 1..--seeds) and scores the planes against

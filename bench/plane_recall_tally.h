@@ -1,6 +1,6 @@
 #pragma once
-// Counters of tunnelmap_plane_recall (issue 7) for one preset x grid step, and the markdown
-// report over all of them. The headline is the issue's definition (SegmentationOptions::by_size);
+// Counters of tunnelmap_plane_recall for one preset x grid step, and the markdown report over
+// all of them. The headline is the docs/recall.md definition (SegmentationOptions::by_size);
 // the incidence and normal-pixel views only explain where the misses are.
 #include <map>
 #include <string>
@@ -27,7 +27,7 @@ struct RunTally {
   int grid_step = 1;
   int min_points = 0;  // grow.min_points of the run: the normal-pixel view's threshold
   long frames = 0;
-  SegmentationScore score;          // headline: issue 7's definition
+  SegmentationScore score;          // headline: the docs/recall.md definition
   Count bands[kIncidenceBands];     // counted surfaces by incidence band
   std::map<std::string, Count> by_name;  // counted surfaces by simulator surface name
   Count up_to_80_deg;               // supplementary: only surfaces seen at <= 80 degrees

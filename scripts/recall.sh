@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds tunnelmap_plane_recall (Release, no GUI) in build-bench and regenerates docs/recall.md:
-# issue 7's plane recall / precision on simulated lab and field frames (4 seeds x 30 frames,
+# plane recall / precision on simulated lab and field frames (4 seeds x 30 frames,
 # grid steps 1 and 2) with a breakdown of the missed surfaces. Takes ~1 min on the
 # 2-core machine at load 3 (plus the build the first time); the frames run on one thread.
 # Usage: bash scripts/recall.sh [more tunnelmap_plane_recall options, e.g. --csv out/recall.csv]

@@ -18,7 +18,7 @@ fi
 if [ "${CI:-}" = "true" ] || [ "${TUNNELMAP_PACKAGE_TEST:-}" = "1" ]; then
   if [ "$(id -u)" -eq 0 ]; then bash ../scripts/package-test.sh; else echo "package test skipped: needs root"; fi
 fi
-# Hardening jobs (issue 8), in CI or on request (TUNNELMAP_HARDENING=1): the unit and
+# Hardening jobs, in CI or on request (TUNNELMAP_HARDENING=1): the unit and
 # integration tests again under AddressSanitizer + UndefinedBehaviorSanitizer (clang), then
 # every libFuzzer target for about a minute from its seed corpus. Both fail on any finding.
 if [ "${CI:-}" = "true" ] || [ "${TUNNELMAP_HARDENING:-}" = "1" ]; then

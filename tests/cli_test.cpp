@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <tuple>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <pcl/PolygonMesh.h>
@@ -145,6 +146,40 @@ TEST(Cli, BadInputExitsThreeNamingTheFile) {
     EXPECT_EQ(r.exit_code, 3) << args << "\n" << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
     EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, AFrameSmallerThanTheNormalWindowIsRefused) {
+  // normals.smoothing_px (default 10) is the side of the normal window: a smaller frame has no
+  // pixel with a normal, so it is an input error (exit 3, one line naming the file), not a run.
+  IoTempDir tmp;
+  ASSERT_TRUE(cv::imwrite(tmp.file("tiny.png"), cv::Mat(1, 1, CV_16UC1, cv::Scalar(1500))));
+  ASSERT_TRUE(cv::imwrite(tmp.file("narrow.png"), cv::Mat(40, 9, CV_16UC1, cv::Scalar(1500))));
+  ASSERT_TRUE(cv::imwrite(tmp.file("window.png"), cv::Mat(12, 12, CV_16UC1, cv::Scalar(1500))));
+  const std::string tiny = tmp.file("tiny.png"), narrow = tmp.file("narrow.png"), window = tmp.file("window.png");
+  const std::vector<std::tuple<std::string, std::string, std::string>> refused = {
+      {"detect " + tiny + " --json " + tmp.file("d.json") + " --ply " + tmp.file("d.ply"), tiny, "1x1 pixels"},
+      {"detect " + tiny + " --method ransac --json " + tmp.file("d.json"), tiny, "1x1 pixels"},
+      {"planes " + tiny + " --json " + tmp.file("p.json") + " --labels " + tmp.file("p.png"), tiny, "1x1 pixels"},
+      {"detect " + narrow + " --json " + tmp.file("d.json"), narrow, "9x40 pixels"},
+      {"planes " + window + " --set normals.smoothing_px=13 --json " + tmp.file("p.json"), window,
+       "smaller than the 13x13 normal window"},
+  };
+  for (const auto& [args, file, problem] : refused) {
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.exit_code, 3) << args << "\n" << r.err << r.out;
+    EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("tunnelmap-cli: " + file + ": image is ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(problem), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("normals.smoothing_px"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "") << args;  // refused before any frame was processed
+    for (const char* out : {"d.json", "d.ply", "p.json", "p.png", "p_000000.png"})
+      EXPECT_FALSE(fs::exists(tmp.file(out))) << args << " left " << out;
+  }
+  // A frame as large as the window is processed (no tunnel in a flat 12x12 frame, exit 0).
+  for (const char* cmd : {"detect", "planes"}) {
+    const auto r = run_cli(std::string(cmd) + " " + window);
+    EXPECT_EQ(r.exit_code, 0) << cmd << "\n" << r.err;
   }
 }
 

@@ -1,5 +1,6 @@
 // The Table 1 evaluation (core/evaluation): segmentation metrics, report writers, sweeps, the
-// symmetric zone prior, and the reduced CI protocol asserting the issue's acceptance bounds.
+// symmetric zone prior, and the reduced CI protocol asserting the acceptance bounds
+// (core/evaluation/table1_bounds.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,7 +61,7 @@ TEST(SegmentationMetrics, CountsCorrectPlanesAndFoundSurfaces) {
   EXPECT_THROW(score_segmentation(p, truth, o), InputError);
 }
 
-// Issue 7's physical-size criterion. A scene rendered by ray casting: each square (centre,
+// The physical-size criterion of docs/recall.md. A scene rendered by ray casting: each square (centre,
 // in-plane axes a and b, half side) is a true surface; pixels whose ray hits a square get its
 // id and the exact 3-D point; every other pixel sees nothing (NaN point).
 struct TrueSquare {
@@ -306,7 +307,7 @@ TEST(Sweeps, OneSweepValueRunsAllMethodsOnPooledPoses) {
 }
 
 // The reduced protocol CI runs (docs/evaluation.md): 3 frames per cell for PG&C and Qhull, 1 per
-// cell for R&L on every 8th pixel (its 100 iterations are slow by design). Asserts the issue's
+// cell for R&L on every 8th pixel (its 100 iterations are slow by design). Asserts the acceptance
 // bounds for PG&C and the paper's qualitative findings.
 TEST(Table1Protocol, ReducedProtocolMeetsTheBounds) {
   ProtocolOptions o;
@@ -327,8 +328,8 @@ TEST(Table1Protocol, ReducedProtocolMeetsTheBounds) {
       ASSERT_TRUE(r.has_segmentation);
       // Lowest cell: 5 m to the plate, where far planes of < 100 px straddle plates 6-12 mm
       // apart. Measured there: 0.49 with the defaults (grid step 2 and its edge-on pass, which
-      // adds far edge-on planes: 0.51 without it), 0.61 with every-pixel growing. By issue 7's
-      // majority rule precision is >= 98.9 % (docs/recall.md).
+      // adds far edge-on planes: 0.51 without it), 0.61 with every-pixel growing. By the
+      // majority rule of docs/recall.md precision is >= 98.9 %.
       EXPECT_GT(r.segmentation.precision(), 0.45) << r.cell;
     }
   }

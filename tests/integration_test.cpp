@@ -55,7 +55,7 @@ SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames,
   return s;
 }
 
-// The core issue's bounds: every frame detected, mean absolute error <= 10 mm, sigma <= 4 mm.
+// The core accuracy bounds: every frame detected, mean absolute error <= 10 mm, sigma <= 4 mm.
 void expect_core_bounds(const SequenceScore& s) {
   EXPECT_EQ(s.detected, s.frames);
   EXPECT_LE(s.width_err_mm, 10.0);

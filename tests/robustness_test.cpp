@@ -148,6 +148,7 @@ TEST(Robustness, HostileInputs) {
   write_bytes(t / "zero_size.png", png_header_only(0, 0));
   write_bytes(t / "huge.png", png_header_only(100000, 100000));
   write_bytes(t / "text.png", "this is a note, not an image\n");
+  cv::imwrite(T + "/one_pixel.png", cv::Mat(1, 1, CV_16UC1, cv::Scalar(1500)));
   fs::create_directories(t / "no_dataset");
 
   // ---- PCDs
@@ -180,6 +181,10 @@ TEST(Robustness, HostileInputs) {
   write_dataset(t / "ds_grey8", [](auto& j) { j["frames"][1]["depth"] = "depth/grey8.png"; });
   cv::imwrite(T + "/ds_grey8/depth/grey8.png", cv::Mat(kH, kW, CV_8UC1, cv::Scalar(90)));
   write_dataset(t / "ds_ok");
+  // Frames of 4x3 pixels, consistent with the intrinsics, but smaller than the normal window.
+  write_dataset(t / "ds_tiny", [](auto& j) { j["intrinsics"]["width"] = 4, j["intrinsics"]["height"] = 3; });
+  for (int i = 0; i < 2; ++i)
+    cv::imwrite(T + "/ds_tiny/depth/00000" + std::to_string(i) + ".png", cv::Mat(3, 4, CV_16UC1, cv::Scalar(1500)));
 
   // ---- presets
   write_bytes(t / "unknown_key.json", R"({"params": {"grow.angle_deg": 4, "grow.speed": 2}})");
@@ -208,6 +213,8 @@ TEST(Robustness, HostileInputs) {
       {"PNG header claiming 0x0", T + "/zero_size.png", T + "/zero_size.png", 3, "absurd image size 0x0"},
       {"PNG header claiming 100000x100000", T + "/huge.png", T + "/huge.png", 3, "absurd image size 100000x100000"},
       {"text file named .png", T + "/text.png", T + "/text.png", 3, "not a PNG"},
+      {"1x1 depth PNG (smaller than the normal window)", T + "/one_pixel.png", T + "/one_pixel.png", 3,
+       "smaller than the 10x10 normal window"},
       {"all-zero depth PNG", T + "/zero.png", "", 0, "0/1 frames detected"},
       {"corrupt PCD (random bytes)", T + "/garbage.pcd", T + "/garbage.pcd", 3, "PCD"},
       {"truncated binary PCD", T + "/truncated.pcd", T + "/truncated.pcd", 3, "truncated PCD"},
@@ -226,6 +233,8 @@ TEST(Robustness, HostileInputs) {
       {"dataset folder that is a symlink loop", T + "/folder_loop", T + "/folder_loop", 3, "symbolic links"},
       {"dataset.json: frame file missing", T + "/ds_missing_frame", T + "/ds_missing_frame" + ds, 3, "not found"},
       {"dataset frame that is an 8-bit PNG", T + "/ds_grey8", T + "/ds_grey8" + ds, 3, "8-bit grey"},
+      {"dataset of 4x3 frames (smaller than the normal window)", T + "/ds_tiny", T + "/ds_tiny/depth/000000.png", 3,
+       "smaller than the 10x10 normal window"},
       {"preset with an unknown key", T + "/ds_ok --params " + T + "/unknown_key.json", T + "/unknown_key.json", 3,
        "unknown parameter 'grow.speed'"},
       {"preset with an out-of-range value", T + "/ds_ok --params " + T + "/out_of_range.json", T + "/out_of_range.json", 3,

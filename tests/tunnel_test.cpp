@@ -540,7 +540,7 @@ TEST(TunnelDetector, RejectsAZeroUpVector) {
   EXPECT_STREQ(wall_class_name(WallClass::Unassigned), "unassigned");
 }
 
-// Detection into a reused map (issue 7: no allocation per frame) must not carry anything over
+// Detection into a reused map (no allocation per frame) must not carry anything over
 // from the previous frame: every field equal, doubles bit for bit.
 void expect_same_map(const TunnelMap& a, const TunnelMap& b) {
   EXPECT_EQ(a.detected, b.detected);

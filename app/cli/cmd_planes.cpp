@@ -65,6 +65,7 @@ int run_planes(const PlanesOptions& o) {
   // and the label images in frame order.
   const int repeat = o.repeat;
   auto work = [params, repeat](const DepthFrame& frame, FrameResult& r) {
+    check_frame_size(frame, normal_options(params));  // InputError naming the file
     OrganizedCloud& cloud = r.cloud;
     // Every stage's time (cloud, normals, planes and the planes' own sub-stages: grow, refine,
     // edge_on, contours), reported as the median over the repeats.

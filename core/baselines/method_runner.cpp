@@ -22,8 +22,9 @@ void MethodRunner::run(const DepthFrame& frame, FrameResult& result, TunnelConte
     pipeline_.run(frame, result, context);
     return;
   }
-  const auto start = std::chrono::steady_clock::now();
   const Parameters& p = pipeline_.params();
+  check_frame_size(frame, normal_options(p));  // the same frames as PG&C are refused
+  const auto start = std::chrono::steady_clock::now();
   result.cloud.timings_ms.clear();
   {
     StageTimer t(result.cloud.timings_ms, "cloud");

@@ -15,8 +15,8 @@
 //    The area is the sum of the visible pixels' footprints z^3 / (fx fy |n.p|) on the
 //    surface's plane n, fitted by least squares to those pixels' points -- the same footprint
 //    PG&C uses for grow.min_area_m2, so "larger than the minimum area" means the same thing.
-// SegmentationOptions::by_size() is the issue-7 definition: physical criterion only, majority
-// overlap.
+// SegmentationOptions::by_size() is the plane recall definition of docs/recall.md: physical
+// criterion only, majority overlap.
 #include <Eigen/Core>
 #include <cstdint>
 #include <vector>
@@ -43,7 +43,7 @@ struct SegmentationOptions {
   int min_surface_points = 40;
   double min_surface_area_m2 = 0.004;
 
-  // Issue 7: a surface counts when its visible part has >= min_points pixels and >= min_area_m2
+  // docs/recall.md: a surface counts when its visible part has >= min_points pixels and >= min_area_m2
   // (no pixel minimum); a plane is correct when > 50 % of its pixels lie on one surface.
   static SegmentationOptions by_size(int min_points, double min_area_m2);
 };

@@ -1,5 +1,5 @@
 #pragma once
-// The acceptance bounds of the Table 1 reproduction (issue 6), checked on evaluation results:
+// The acceptance bounds of the Table 1 reproduction (docs/evaluation.md), checked on evaluation results:
 // PG&C per cell |error| <= 5 mm and sigma <= 3 mm (lab), <= 12 mm and <= 6 mm (field);
 // detection in every frame; PG&C's error below both baselines' in every cell; PG&C at least
 // 30x faster than R&L. Used by the report and by the CI test.

@@ -1,6 +1,10 @@
 #include "core/pipeline/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
+#include <string>
+
+#include "core/util/error.h"
 
 namespace tunnelmap {
 
@@ -61,6 +65,14 @@ Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world
   return -Eigen::Vector3d::UnitY();  // image-up: camera y points down the image
 }
 
+void check_frame_size(const DepthFrame& frame, const NormalOptions& normals) {
+  const int window = std::max(3, normals.smoothing_px);  // the side estimate_normals uses
+  if (frame.width >= window && frame.height >= window) return;
+  throw InputError(frame.source, "image is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                                     " pixels, smaller than the " + std::to_string(window) + "x" +
+                                     std::to_string(window) + " normal window (normals.smoothing_px)");
+}
+
 Pipeline::Pipeline(Parameters params) : params_(std::move(params)) { derive_options(); }
 
 void Pipeline::set_params(const Parameters& params) {
@@ -77,6 +89,7 @@ void Pipeline::derive_options() {
 
 void Pipeline::run(const DepthFrame& frame, FrameResult& result, TunnelContext* context,
                    Stage from) const {
+  check_frame_size(frame, normals_);
   const auto start = std::chrono::steady_clock::now();
   if (from <= Stage::Cloud) {
     reset_timings(result.cloud.timings_ms);

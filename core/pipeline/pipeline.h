@@ -27,6 +27,11 @@ TunnelOptions tunnel_options(const Parameters& p);
 Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world_up,
                            const std::optional<Eigen::Vector3d>& camera_up);
 
+// InputError naming frame.source when the frame is narrower or lower than the normal window
+// (normals.smoothing_px): no pixel of such a frame can get a normal, so it is refused before
+// any stage runs instead of giving an empty "result". Allocates nothing when the frame fits.
+void check_frame_size(const DepthFrame& frame, const NormalOptions& normals);
+
 struct FrameResult {
   OrganizedCloud cloud;
   PlaneSegments planes;
@@ -44,7 +49,8 @@ class Pipeline {
   void set_camera_up(const std::optional<Eigen::Vector3d>& up) { camera_up_ = up; }
 
   // Runs everything from stage `from` on. Stages before `from` reuse `result`'s contents,
-  // which must come from an earlier run on the same frame.
+  // which must come from an earlier run on the same frame. A frame smaller than the normal
+  // window is an InputError (check_frame_size), thrown before `result` is touched.
   void run(const DepthFrame& frame, FrameResult& result, TunnelContext* context = nullptr,
            Stage from = Stage::Cloud) const;
   FrameResult run(const DepthFrame& frame, TunnelContext* context = nullptr) const {

@@ -1,5 +1,5 @@
 #pragma once
-// Coarse-to-fine PG&C (issue 7's fast path): the planes are grown on every `step`-th pixel of
+// Coarse-to-fine PG&C (the default fast path): the planes are grown on every `step`-th pixel of
 // every `step`-th row, then each full-resolution pixel is assigned to the plane of a nearby
 // grown sample if it passes the same eq. 2 tests (point-to-plane distance epsilon and normal
 // angle lambda) against that plane's final model.

@@ -15,7 +15,7 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 namespace {
 
 // Per-thread scratch of the histogram test, reused frame after frame: no allocation per frame
-// in the steady state (issue 7).
+// in the steady state (checked by tests/allocation).
 struct OutlierScratch {
   std::vector<bool> use, in;
   std::vector<double> weight;

@@ -1,5 +1,5 @@
 // tunnelmap_allocation_count: allocations per frame of each pipeline stage in the steady state
-// (issue 7: "no allocation per frame"). The same few simulated VGA frames run through the
+// (requirement: no allocation per frame). The same few simulated VGA frames run through the
 // Pipeline again and again with one reused FrameResult; after the warm-up rounds every run is
 // counted. Stages are separated with Pipeline::run's `from` argument:
 //   run(from = Tunnel) = tunnel (+ the pipeline's own bookkeeping), run(from = Planes) - that =

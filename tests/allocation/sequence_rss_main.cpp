@@ -1,5 +1,5 @@
 // tunnelmap_sequence_rss: resident memory while SequenceRunner detects the tunnel in a long
-// sequence (issue 7: peak RSS for 1,000 frames <= 300 MB, flat over time). The input is a
+// sequence (requirement: peak RSS for 1,000 frames <= 300 MB, flat over time). The input is a
 // 30-frame simulated lab dataset on disk, cycled, so every frame is decoded from PNG as in real
 // use. Prints RSS at frames 100, 500, 1000 (and the end); exits 1 if the peak exceeds
 // --max-peak-mb or RSS grows by more than --max-growth-mb between frame 100 and the end.

@@ -126,7 +126,7 @@ TEST_F(OpenNiTest, Streams60LiveFramesEqualToTheSimulatorWithIntrinsicsAndPoses)
   EXPECT_EQ(device.frames_read(), 60);
 }
 
-// The end-to-end check: stream, record 30 frames, play back with OpenNI2's OniFile
+// The OpenNI2 end-to-end check: stream, record 30 frames, play back with OpenNI2's OniFile
 // driver, detect in every frame with the accuracy of the simulator's own (dataset) frames.
 class OpenNiRecordingTest : public OpenNiTest, public ::testing::WithParamInterface<std::string> {};
 

@@ -1,4 +1,4 @@
-// Soak test (issue 8, "long streams"): 5,000 frames from the simulated OpenNI2 camera through the
+// Soak test (long streams): 5,000 frames from the simulated OpenNI2 camera through the
 // streaming path `detect --device` uses (DeviceFrameSource -> LiveDevice -> OpenNI2 -> the
 // project's driver), the full Pipeline with a TunnelContext on every frame. After warm-up,
 // resident memory may grow by less than 5 % and no file descriptor may stay open.
