@@ -1,5 +1,7 @@
 #include "ui/fused_scene.h"
 
+#include "ui/scene/mesh_polydata.h"
+
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
@@ -14,40 +16,6 @@
 namespace tunnelmap::ui {
 
 namespace {
-
-vtkSmartPointer<vtkPolyData> mesh_polydata(const TriangleMesh& mesh) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.vertices.size()));
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.vertices[i].x(), mesh.vertices[i].y(), mesh.vertices[i].z());
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& t : mesh.triangles) {
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    polys->InsertNextCell(3, ids);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  if (mesh.colors.size() == mesh.vertices.size()) {
-    auto colors = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colors->SetName("RGB");
-    colors->SetNumberOfComponents(3);
-    colors->SetNumberOfTuples(static_cast<vtkIdType>(mesh.colors.size()));
-    for (std::size_t i = 0; i < mesh.colors.size(); ++i)
-      for (int c = 0; c < 3; ++c) colors->SetTypedComponent(static_cast<vtkIdType>(i), c, mesh.colors[i][c]);
-    poly->GetPointData()->SetScalars(colors);
-  }
-  if (mesh.normals.size() == mesh.vertices.size()) {
-    auto normals = vtkSmartPointer<vtkFloatArray>::New();
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.normals.size()));
-    for (std::size_t i = 0; i < mesh.normals.size(); ++i)
-      normals->SetTuple3(static_cast<vtkIdType>(i), mesh.normals[i].x(), mesh.normals[i].y(), mesh.normals[i].z());
-    poly->GetPointData()->SetNormals(normals);
-  }
-  return poly;
-}
 
 // One frustum (camera frame) per pose, moved into the world frame, in one polydata.
 vtkSmartPointer<vtkPolyData> frusta_polydata(const Intrinsics& k, const std::vector<Eigen::Isometry3d>& poses) {
@@ -137,7 +105,7 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
   auto& g = out.geometry;
   g.cloud = vtkSmartPointer<vtkPolyData>::New();  // no single frame's cloud in the world view
   g.planes = vtkSmartPointer<vtkPolyData>::New();
-  g.mesh = mesh_polydata(mesh);
+  g.mesh = scene::mesh_polydata(mesh);
   set_pose_layers(g, r.merged, dataset.intrinsics, fused_poses);
   out.given_geometry = g;
   if (out.refined) {

@@ -1,5 +1,7 @@
 #include "app/render/map_mesh.h"
 
+#include "ui/scene/mesh_polydata.h"
+
 #include <Eigen/Eigenvalues>
 #include <vtkCellArray.h>
 #include <vtkPointData.h>
@@ -104,36 +106,6 @@ TunnelMap frame_of(const PlyMesh& mesh) {
   return frame;
 }
 
-// The triangles for which `keep(face)` is true (all vertices are kept: unused ones draw nothing).
-template <typename Keep>
-vtkSmartPointer<vtkPolyData> to_polydata(const PlyMesh& mesh, Keep keep) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.vertices.size()));
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.vertices[i].x(), mesh.vertices[i].y(), mesh.vertices[i].z());
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    if (!keep(f)) continue;
-    const auto& t = mesh.triangles[f];
-    const vtkIdType ids[3] = {t[0], t[1], t[2]};
-    polys->InsertNextCell(3, ids);
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  if (mesh.colors.size() == mesh.vertices.size()) {
-    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colours->SetName("Colors");
-    colours->SetNumberOfComponents(3);
-    colours->SetNumberOfTuples(static_cast<vtkIdType>(mesh.colors.size()));
-    for (std::size_t i = 0; i < mesh.colors.size(); ++i)
-      for (int k = 0; k < 3; ++k) colours->SetValue(static_cast<vtkIdType>(3 * i + k), mesh.colors[i][k]);
-    poly->GetPointData()->SetScalars(colours);
-  }
-  return poly;
-}
-
 }  // namespace
 
 bool is_mesh_input(const std::string& path) {
@@ -152,8 +124,8 @@ MapMesh load_map_mesh(const std::string& path) {
   auto is_boundary = [&](std::size_t f) {
     return labelled && mesh.face_labels[f] == static_cast<int>(MapFaceLabel::Boundary);
   };
-  out.poly = to_polydata(mesh, [&](std::size_t f) { return !is_boundary(f); });
-  out.boundary = to_polydata(mesh, is_boundary);
+  out.poly = scene::mesh_polydata(mesh, [&](std::size_t f) { return !is_boundary(f); });
+  out.boundary = scene::mesh_polydata(mesh, is_boundary);
   out.frame = frame_of(mesh);
   out.triangles = mesh.triangles.size();
   return out;
