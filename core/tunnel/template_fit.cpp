@@ -52,24 +52,20 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
     fresh.reason.clear();
     t = std::move(fresh);
   }
-  if (seen[0] && seen[1]) {
-    t.left_right_angle_deg = angle_deg(means[0], -means[1]);
-    if (t.left_right_angle_deg > max_pair_angle_deg) {
-      t.status = "no_parallel_pair";
-      set_text(t.reason, "left and right walls are %.1f deg from parallel (max %.1f)",
-               t.left_right_angle_deg, max_pair_angle_deg);
-      return;
-    }
-  }
-  if (seen[2] && seen[3]) {
-    t.top_bottom_angle_deg = angle_deg(means[3], -means[2]);
-    if (t.top_bottom_angle_deg > max_pair_angle_deg) {
-      t.status = "no_parallel_pair";
-      set_text(t.reason, "top and bottom walls are %.1f deg from parallel (max %.1f)",
-               t.top_bottom_angle_deg, max_pair_angle_deg);
-      return;
-    }
-  }
+  // A pair with both walls seen must be antiparallel.
+  const auto parallel = [&](int a, int b, double& angle, const char* text) {
+    if (!seen[a] || !seen[b]) return true;
+    angle = angle_deg(means[a], -means[b]);
+    if (angle <= max_pair_angle_deg) return true;
+    t.status = "no_parallel_pair";
+    set_text(t.reason, text, angle, max_pair_angle_deg);
+    return false;
+  };
+  if (!parallel(0, 1, t.left_right_angle_deg,
+                "left and right walls are %.1f deg from parallel (max %.1f)") ||
+      !parallel(3, 2, t.top_bottom_angle_deg,
+                "top and bottom walls are %.1f deg from parallel (max %.1f)"))
+    return;
   // One direction per pair from the walls seen of it (inward normals: left faces right).
   const bool have_a = seen[0] || seen[1], have_b = seen[2] || seen[3];
   Eigen::Vector3d a = (seen[0] ? means[0] : Eigen::Vector3d::Zero()) -
