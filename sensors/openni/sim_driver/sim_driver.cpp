@@ -419,10 +419,14 @@ class SimDriver : public oni::driver::DriverBase {
 // every frame it reads): OpenNI2 keeps only a stream's newest frame, so a timer-paced camera
 // loses frames whenever the reader is slower, while this one never does and runs as fast as the
 // reader (soak tests, however slow the reader: no time-out, or a slow reader would lose frames
-// again). A client that never asks gets the first frame only.
+// again). A client that never asks gets the next frame only after kAckTimeout: a reader that
+// missed frame k (OpenNI2 hands it the newest, and a stop can race a send) would otherwise wait
+// for k + 1 forever while this waits for its ask of k (seen once as a 120 s hang of a
+// recording test under AddressSanitizer on a loaded machine).
 bool SimDevice::wait_until_read(int index) {
+  constexpr auto kAckTimeout = std::chrono::seconds(10);
   std::unique_lock<std::mutex> lock(ack_mutex_);
-  ack_cv_.wait(lock, [&] { return quit_ || asked_ >= index; });
+  ack_cv_.wait_for(lock, kAckTimeout, [&] { return quit_ || asked_ >= index; });
   return !quit_;
 }
 
