@@ -22,6 +22,7 @@
 #include "core/io/ply_mesh_reader.h"
 #include "core/io/readers.h"
 #include "core/util/error.h"
+#include "tests/support/expect_input_error.h"
 #include "tests/support/io_temp_dir.h"
 
 namespace tunnelmap {
@@ -29,19 +30,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::IoTempDir;
+using testing::expect_input_error;
 using nlohmann::json;
 
-// Expects `f` to throw InputError whose message contains every string in `parts`.
-void expect_input_error(const std::function<void()>& f, const std::vector<std::string>& parts) {
-  try {
-    f();
-    ADD_FAILURE() << "expected InputError containing '" << parts.front() << "'";
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
-  }
-}
 
 cv::Mat depth_ramp(int w, int h) {
   cv::Mat img(h, w, CV_16UC1);

@@ -19,6 +19,7 @@
 #include "core/io/tum_list.h"
 #include "core/io/tum_sequence.h"
 #include "core/util/error.h"
+#include "tests/support/expect_input_error.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
 
@@ -27,19 +28,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::IoTempDir;
+using testing::expect_input_error;
 using testing::run_cli;
 using testing::write_text_file;
 
-void expect_input_error(const std::function<void()>& f, const std::vector<std::string>& parts) {
-  try {
-    f();
-    ADD_FAILURE() << "expected InputError containing '" << parts.front() << "'";
-  } catch (const InputError& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
-  }
-}
 
 TumPoseEntry sample(double t, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
   TumPoseEntry s;

@@ -1,4 +1,5 @@
 #include "core/io/dataset.h"
+#include "core/io/path_inside.h"
 
 #include <cmath>
 #include <filesystem>
@@ -62,14 +63,6 @@ class Checker {
   std::string path_;
 };
 
-bool is_inside(const fs::path& root, const fs::path& p) {
-  auto r = root.begin(), q = p.begin();
-  for (; r != root.end(); ++r, ++q) {
-    if (r->empty()) continue;  // trailing separator
-    if (q == p.end() || *r != *q) return false;
-  }
-  return true;
-}
 
 // Resolves a frame's relative path inside the dataset folder (symlinks followed) and checks that
 // it exists and does not escape the folder.
@@ -83,7 +76,7 @@ std::string resolve_frame_path(const Checker& c, const fs::path& root, const jso
   std::error_code ec;
   const fs::path resolved = fs::weakly_canonical(root / p, ec);
   if (ec) c.fail(key, "'" + rel + "': " + ec.message());
-  if (!is_inside(root, resolved)) c.fail(key, "'" + rel + "' escapes the dataset folder");
+  if (!path_is_inside(root, resolved)) c.fail(key, "'" + rel + "' escapes the dataset folder");
   if (!fs::exists(resolved, ec)) c.fail(key, "file '" + rel + "' not found");
   if (!fs::is_regular_file(resolved, ec)) c.fail(key, "'" + rel + "' is not a regular file");
   return resolved.string();

@@ -1,4 +1,5 @@
 #include "core/io/tum_sequence.h"
+#include "core/io/path_inside.h"
 
 #include <cmath>
 #include <cstdio>
@@ -17,14 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_inside(const fs::path& root, const fs::path& p) {
-  auto r = root.begin(), q = p.begin();
-  for (; r != root.end(); ++r, ++q) {
-    if (r->empty()) continue;  // trailing separator
-    if (q == p.end() || *r != *q) return false;
-  }
-  return true;
-}
 
 // The same path rules as dataset.json: relative, inside the folder after resolving links,
 // an existing regular file. Errors name the list and the line.
@@ -38,7 +31,7 @@ std::string resolve_listed(const fs::path& root, const std::string& list, const 
   std::error_code ec;
   const fs::path resolved = fs::weakly_canonical(root / p, ec);
   if (ec) fail("'" + e.path + "': " + ec.message());
-  if (!is_inside(root, resolved)) fail("'" + e.path + "' escapes the sequence folder");
+  if (!path_is_inside(root, resolved)) fail("'" + e.path + "' escapes the sequence folder");
   if (!fs::exists(resolved, ec)) fail("file '" + e.path + "' not found");
   if (!fs::is_regular_file(resolved, ec)) fail("'" + e.path + "' is not a regular file");
   return resolved.string();
