@@ -48,8 +48,6 @@ void add_boundary_bands(vtkRenderer* renderer, vtkPolyData* bands, bool visible)
 scene::PixelBox projected_box(vtkRenderer* renderer, vtkPolyData* mesh, int width, int height) {
   scene::PixelBox box;
   if (!mesh || mesh->GetNumberOfPoints() == 0) return box;
-  box.x0 = width;
-  box.y0 = height;
   auto coord = vtkSmartPointer<vtkCoordinate>::New();
   coord->SetCoordinateSystemToWorld();
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i) {
@@ -57,12 +55,7 @@ scene::PixelBox projected_box(vtkRenderer* renderer, vtkPolyData* mesh, int widt
     mesh->GetPoint(i, p);
     coord->SetValue(p);
     const int* d = coord->GetComputedDisplayValue(renderer);
-    const int x = d[0], y = height - 1 - d[1];
-    box.x0 = std::min(box.x0, x);
-    box.x1 = std::max(box.x1, x);
-    box.y0 = std::min(box.y0, y);
-    box.y1 = std::max(box.y1, y);
-    ++box.count;
+    box.add(d[0], height - 1 - d[1]);
   }
   return box;
 }

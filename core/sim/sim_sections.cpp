@@ -1,5 +1,7 @@
 #include "core/sim/sim_sections.h"
 
+#include <functional>
+
 #include <algorithm>
 #include <limits>
 
@@ -33,28 +35,20 @@ std::vector<double> SimSections::joints_x() const {
   return x;
 }
 
-double SimSections::min_width() const {
-  double v = spans_[0].width_m;
-  for (const SimSpan& s : spans_) v = std::min(v, s.width_m);
+namespace {
+// The smallest (`less`) or largest value of `field` over the spans.
+template <typename Better>
+double extreme(const std::vector<SimSpan>& spans, double SimSpan::*field, Better better) {
+  double v = spans[0].*field;
+  for (const SimSpan& s : spans)
+    if (better(s.*field, v)) v = s.*field;
   return v;
 }
+}  // namespace
 
-double SimSections::min_height() const {
-  double v = spans_[0].height_m;
-  for (const SimSpan& s : spans_) v = std::min(v, s.height_m);
-  return v;
-}
-
-double SimSections::max_width() const {
-  double v = spans_[0].width_m;
-  for (const SimSpan& s : spans_) v = std::max(v, s.width_m);
-  return v;
-}
-
-double SimSections::max_height() const {
-  double v = spans_[0].height_m;
-  for (const SimSpan& s : spans_) v = std::max(v, s.height_m);
-  return v;
-}
+double SimSections::min_width() const { return extreme(spans_, &SimSpan::width_m, std::less<>()); }
+double SimSections::min_height() const { return extreme(spans_, &SimSpan::height_m, std::less<>()); }
+double SimSections::max_width() const { return extreme(spans_, &SimSpan::width_m, std::greater<>()); }
+double SimSections::max_height() const { return extreme(spans_, &SimSpan::height_m, std::greater<>()); }
 
 }  // namespace tunnelmap::sim

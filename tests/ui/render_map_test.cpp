@@ -11,6 +11,7 @@
 
 #include "app/cli/map_image.h"
 #include "core/export/map_ply.h"
+#include "tests/ui/fresh_dir.h"
 #include "tests/ui/synthetic_tunnel.h"
 #include "ui/scene/image_checks.h"
 #include "ui/scene/rgb_image.h"
@@ -20,13 +21,6 @@ namespace tunnelmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A 12 m map of a 0.82 x 1.30 m tunnel in a world frame whose axis is not a world axis.
 std::string write_map(const std::string& dir) {

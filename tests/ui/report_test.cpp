@@ -15,6 +15,7 @@
 #include <string>
 
 #include "core/util/error.h"
+#include "tests/ui/fresh_dir.h"
 #include "tests/ui/report_test_map.h"
 #include "ui/report/inspection_report.h"
 
@@ -22,13 +23,6 @@ namespace tunnelmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 bool have_tool(const char* tool) {
   return std::system((std::string("command -v ") + tool + " > /dev/null 2>&1").c_str()) == 0;

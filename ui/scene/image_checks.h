@@ -7,6 +7,15 @@ namespace tunnelmap::scene {
 struct PixelBox {
   int count = 0;
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive bounding box of the matching pixels
+
+  void add(int x, int y) {
+    if (count == 0) x0 = x1 = x, y0 = y1 = y;
+    x0 = x < x0 ? x : x0;
+    x1 = x > x1 ? x : x1;
+    y0 = y < y0 ? y : y0;
+    y1 = y > y1 ? y : y1;
+    ++count;
+  }
 };
 
 // Saturated boundary blue / traversable red as drawn by TunnelScene (unlit, so exact up to

@@ -205,8 +205,6 @@ vtkPolyData* TunnelScene::layer_polydata(Layer layer) const {
 PixelBox TunnelScene::projected_boundary(int width, int height) const {
   PixelBox box;
   if (!map_.detected) return box;
-  box.x0 = width;
-  box.y0 = height;
   auto coord = vtkSmartPointer<vtkCoordinate>::New();
   coord->SetCoordinateSystemToWorld();
   for (const Wall& wall : map_.walls) {
@@ -215,12 +213,7 @@ PixelBox TunnelScene::projected_boundary(int width, int height) const {
       if (!c.allFinite()) continue;
       coord->SetValue(c.x(), c.y(), c.z());
       const int* d = coord->GetComputedDisplayValue(renderer_);
-      const int x = d[0], y = height - 1 - d[1];
-      box.x0 = std::min(box.x0, x);
-      box.x1 = std::max(box.x1, x);
-      box.y0 = std::min(box.y0, y);
-      box.y1 = std::max(box.y1, y);
-      ++box.count;
+      box.add(d[0], height - 1 - d[1]);
     }
   }
   if (box.count == 0) box = PixelBox();
