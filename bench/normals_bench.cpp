@@ -46,7 +46,8 @@ void BM_NormalsOurs(benchmark::State& state) {
   const Parameters p;
   OrganizedCloud cloud;
   build_cloud(nf.frame, cloud_options(p), cloud);
-  for (auto _ : state) estimate_normals(normal_options(p), cloud);
+  NormalScratch scratch;  // reused, as Pipeline::run does: the steady state
+  for (auto _ : state) estimate_normals(normal_options(p), cloud, scratch);
   if (!nf.true_normals.empty()) {
     const NormalQuality q = quality(nf.true_normals, cloud.normals);
     state.counters["coverage"] = q.coverage;

@@ -17,7 +17,8 @@ void BM_Cloud(benchmark::State& state) {
   const DepthFrame& f = bench_frames()[state.range(0)].frame;
   const Parameters p;
   OrganizedCloud cloud;
-  for (auto _ : state) build_cloud(f, cloud_options(p), cloud);
+  FrameScratch scratch;  // reused, as Pipeline::run does: the steady state
+  for (auto _ : state) build_cloud(f, cloud_options(p), cloud, scratch.cloud);
   state.SetLabel(bench_frames()[state.range(0)].name);
 }
 
@@ -26,7 +27,8 @@ void BM_Normals(benchmark::State& state) {
   const Parameters p;
   OrganizedCloud cloud;
   build_cloud(f, cloud_options(p), cloud);
-  for (auto _ : state) estimate_normals(normal_options(p), cloud);
+  FrameScratch scratch;
+  for (auto _ : state) estimate_normals(normal_options(p), cloud, scratch.normals);
   state.SetLabel(bench_frames()[state.range(0)].name);
 }
 
@@ -39,7 +41,8 @@ void BM_Grow(benchmark::State& state) {
   GrowOptions g = grow_options(p);
   g.compute_contours = false;
   PlaneSegments planes;
-  for (auto _ : state) extract_planes(cloud, g, planes);
+  FrameScratch scratch;
+  for (auto _ : state) extract_planes(cloud, g, planes, scratch.planes);
   state.counters["planes"] = static_cast<double>(planes.planes.size());
   state.SetLabel(bench_frames()[state.range(0)].name);
 }
@@ -63,10 +66,11 @@ void plane_extraction(benchmark::State& state, int grid_step, int edge_on_pass =
   const GrowOptions go = grow_options(p);
   OrganizedCloud cloud;
   PlaneSegments planes;
+  FrameScratch scratch;
   for (auto _ : state) {
-    build_cloud(f, co, cloud);
-    estimate_normals(no, cloud);
-    extract_planes(cloud, go, planes);
+    build_cloud(f, co, cloud, scratch.cloud);
+    estimate_normals(no, cloud, scratch.normals);
+    extract_planes(cloud, go, planes, scratch.planes);
   }
   tunnelmap::bench::set_plane_counters(state, bench_frames()[state.range(0)], planes);
   state.SetLabel(bench_frames()[state.range(0)].name);

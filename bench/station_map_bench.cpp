@@ -44,9 +44,10 @@ void BM_StationMap(benchmark::State& state) {
   pipeline.set_world_up(ds.up);
   std::vector<FrameResult> results(ds.frames.size());
   std::vector<Eigen::Isometry3d> poses;
+  FrameScratch scratch;  // one for all frames: the kept results hold no buffers
   for (std::size_t i = 0; i < ds.frames.size(); ++i) {
     const DepthFrame f = ds.load_frame(i);
-    pipeline.run(f, results[i]);
+    pipeline.run(f, results[i], scratch);
     poses.push_back(*f.pose);
   }
   const std::vector<TunnelMap> detected = [&] {

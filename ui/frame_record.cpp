@@ -1,66 +1,75 @@
 #include "ui/frame_record.h"
 
-#include <cmath>
-#include <nlohmann/json.hpp>
-
-#include "core/util/atomic_file.h"
+#include "core/report/json_numbers.h"
+#include "core/report/statistics.h"
 
 namespace tunnelmap::ui {
+
+FrameRecord FrameRecord::from(int index, const FrameResult& r, Method method, const std::string& source) {
+  FrameRecord f;
+  f.index = index;
+  f.method = method;
+  // A partial map with a dimension unknown has no width/height to tabulate or average.
+  f.detected = r.map.has_width() && r.map.has_height();
+  f.status = status_name(r.map.status);  // the stable name, as in CLI output
+  f.width_m = r.map.width_m;
+  f.height_m = r.map.height_m;
+  f.planes = static_cast<int>(r.planes.planes.size());
+  f.timings_ms = r.timings_ms;
+  f.result = detection_frame_json(static_cast<std::size_t>(index), source, r);
+  f.summary = summary_entry(r);
+  return f;
+}
 
 RunningStats running_stats(const std::vector<FrameRecord>& records) {
   RunningStats s;
   s.frames = static_cast<int>(records.size());
-  double sw = 0, sww = 0, sh = 0, shh = 0;
+  std::vector<double> widths, heights;
   for (const auto& r : records) {
     if (!r.detected) continue;
-    ++s.detected;
-    sw += r.width_m;
-    sww += r.width_m * r.width_m;
-    sh += r.height_m;
-    shh += r.height_m * r.height_m;
+    widths.push_back(r.width_m);
+    heights.push_back(r.height_m);
   }
-  if (s.detected == 0) return s;
-  const double n = s.detected;
-  s.width_mean = sw / n;
-  s.height_mean = sh / n;
-  // Sample standard deviation, as reported in the paper's table.
-  if (s.detected > 1) {
-    s.width_std = std::sqrt(std::max(0.0, (sww - n * s.width_mean * s.width_mean) / (n - 1)));
-    s.height_std = std::sqrt(std::max(0.0, (shh - n * s.height_mean * s.height_mean) / (n - 1)));
-  }
+  s.detected = static_cast<int>(widths.size());
+  // The core's statistics (sample sigma, as in the paper's Table 1), as `detect` prints them.
+  const MeanSigma w = mean_sigma(widths), h = mean_sigma(heights);
+  s.width_mean = w.mean;
+  s.width_std = w.sigma;
+  s.height_mean = h.mean;
+  s.height_std = h.sigma;
   return s;
 }
 
-void write_results_json(const std::string& path, const std::string& input,
-                        const std::vector<FrameRecord>& records, const nlohmann::json& params) {
-  nlohmann::json j;
-  j["format"] = "tunnelmap-results/1";
-  j["tool"] = "tunnelmap";
-  j["version"] = TUNNELMAP_VERSION;
-  j["input"] = input;
-  j["params"] = params;
-  j["frames"] = nlohmann::json::array();
-  for (const auto& r : records)
-    j["frames"].push_back({{"index", r.index}, {"method", method_name(r.method)}, {"detected", r.detected}, {"status", r.status},
-                           {"width_m", r.width_m}, {"height_m", r.height_m}, {"planes", r.planes},
-                           {"timings_ms", r.timings_ms}});
-  const RunningStats s = running_stats(records);
-  j["summary"] = {{"frames", s.frames},          {"detected", s.detected},
-                  {"width_mean_m", s.width_mean}, {"width_std_m", s.width_std},
-                  {"height_mean_m", s.height_mean}, {"height_std_m", s.height_std}};
-  write_file_atomically(path, [&](std::ostream& out) { out << j.dump(2) << "\n"; });
-}
-
-void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "frame,detected,status,width_m,height_m,planes,total_ms,method\n";
-    for (const auto& r : records) {
-      auto t = r.timings_ms.find("total");
-      out << r.index << ',' << (r.detected ? 1 : 0) << ',' << r.status << ',' << r.width_m << ','
-          << r.height_m << ',' << r.planes << ',' << (t == r.timings_ms.end() ? 0.0 : t->second)
-          << ',' << method_name(r.method) << "\n";
+nlohmann::json results_document(const std::vector<FrameRecord>& records, const nlohmann::json& params,
+                                const std::string& input, const Dataset* dataset) {
+  DetectionSummary summary;
+  if (dataset) {
+    summary.gt_width_m = dataset->gt_width_m;
+    summary.gt_height_m = dataset->gt_height_m;
+  }
+  const Method method = records.empty() ? Method::Pgc : records.front().method;
+  nlohmann::json frames = nlohmann::json::array();
+  for (const FrameRecord& r : records) {
+    // The row's timings: after a partial re-run they are the whole pipeline's (main_window.cpp).
+    SummaryEntry entry = r.summary;
+    const auto total = r.timings_ms.find("total");
+    entry.total_ms = total != r.timings_ms.end() ? total->second : 0.0;
+    summary.add(entry);
+    nlohmann::json f = r.result;
+    if (f.is_null()) {  // a frame that could not be read: no result, only why
+      f = {{"index", r.index}, {"detected", false}, {"status", r.status}};
+    } else {
+      nlohmann::json timings = nlohmann::json::object();
+      for (const auto& [stage, ms] : r.timings_ms) timings[stage] = round_to(ms, 1e-3);
+      f["timings_ms"] = timings;
     }
-  });
+    if (r.method != method) f["method"] = method_name(r.method);
+    frames.push_back(std::move(f));
+  }
+  summary.finish();
+  nlohmann::json doc = detection_document(params, frames, summary, input);
+  doc["method"] = method_name(method);
+  return doc;
 }
 
 }  // namespace tunnelmap::ui

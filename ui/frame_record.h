@@ -1,50 +1,49 @@
 #pragma once
-// One row of the results panel: what the pipeline reported for one frame.
+// One row of the results panel: what the pipeline reported for one frame, and that frame's
+// entry of a results document (the model `detect --json/--csv` writes, core/report).
 #include <QString>
 #include <map>
-#include <nlohmann/json_fwd.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/baselines/method.h"
+#include "core/io/dataset.h"
 #include "core/pipeline/pipeline.h"
+#include "core/report/results_json.h"
 
 namespace tunnelmap::ui {
 
 struct FrameRecord {
   int index = 0;
   Method method = Method::Pgc;
-  bool detected = false;
-  std::string status;
+  int param_set = 0;  // which parameter set made it (ResultsPanel numbers them from 1); 0 = unknown
+  bool detected = false;  // width and height both known (measured or inferred)
+  std::string status;     // status_name(), or "error" when the frame could not be read
   double width_m = 0.0, height_m = 0.0;
   int planes = 0;
   StageTimings timings_ms;
+  nlohmann::json result;  // detection_frame_json(); null for an error row
+  SummaryEntry summary;   // what DetectionSummary takes of the frame
 
-  static FrameRecord from(int index, const FrameResult& r, Method method = Method::Pgc) {
-    FrameRecord f;
-    f.index = index;
-    f.method = method;
-    // A partial map with a dimension unknown has no width/height to tabulate or average.
-    f.detected = r.map.has_width() && r.map.has_height();
-    f.status = r.map.status;
-    f.width_m = r.map.width_m;
-    f.height_m = r.map.height_m;
-    f.planes = static_cast<int>(r.planes.planes.size());
-    f.timings_ms = r.timings_ms;
-    return f;
-  }
+  // `source`: the frame's file, as `detect --json` names it.
+  static FrameRecord from(int index, const FrameResult& r, Method method = Method::Pgc,
+                          const std::string& source = {});
 };
 
-// Mean and standard deviation of width/height over the detected frames (paper, Table 1).
+// Mean and sample standard deviation (core/report/statistics.h) of width/height over the
+// frames with both known (paper, Table 1).
 struct RunningStats {
   int detected = 0, frames = 0;
   double width_mean = 0, width_std = 0, height_mean = 0, height_std = 0;
 };
 RunningStats running_stats(const std::vector<FrameRecord>& records);
 
-// Results files: JSON ("tunnelmap-results/1", loadable as a preset by its "params") and CSV.
-void write_results_json(const std::string& path, const std::string& input,
-                        const std::vector<FrameRecord>& records, const nlohmann::json& params);
-void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records);
+// The results document of the rows, as `detect --json` writes it for the same frames:
+// detection_document() with the rows' frame objects and summary; "method" is the first row's,
+// and a row run with another method carries its own "method". `dataset` (may be null) gives the
+// ground truth of the summary.
+nlohmann::json results_document(const std::vector<FrameRecord>& records, const nlohmann::json& params,
+                                const std::string& input, const Dataset* dataset);
 
 }  // namespace tunnelmap::ui

@@ -9,6 +9,8 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "core/fusion/fuse_dataset.h"
+#include "core/fusion/fusion_options.h"
+#include "core/tunnel/tunnel_options.h"
 #include "mesh/tsdf_mesher.h"
 #include "ui/scene/frustum_polydata.h"
 #include "ui/scene/tunnel_polydata.h"
@@ -72,7 +74,7 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
   FusionResult r = fuse_dataset(dataset, params, settings);
   if (cancel.load()) throw FusionCancelled();
   MeshStats ms;
-  const TriangleMesh mesh = extract_mesh(*r.volume, params.get_int("fusion.min_weight"), &ms);
+  const TriangleMesh mesh = extract_mesh(*r.volume, fusion_options(params).min_weight, &ms);
 
   FusedScene out;
   out.frames = n;
@@ -117,7 +119,7 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
       scans.push_back({f.map, f.given_camera_to_world, f.index});
       groups.push_back(f.pose_group);
     }
-    const MultiScanMap given = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
+    const MultiScanMap given = merge_scans(scans, groups, tunnel_options(params).zone_cluster_m);
     set_pose_layers(out.given_geometry, given, dataset.intrinsics, given_poses);
   }
   out.frusta = static_cast<int>(r.merged.poses.size());

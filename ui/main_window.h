@@ -1,7 +1,10 @@
 #pragma once
 // The inspection window: 3D view + 2D depth view, parameter panel, timeline and results panel,
-// File/View menus, status bar. Every file error becomes a message naming the file and the
-// problem; the previously open input and results stay.
+// File/Processing/Device/View menus, status bar. Every error becomes one message naming the
+// file and the problem, in the status bar and the Messages dock (never a dialog); the
+// previously open input and results stay. Implementation split by job: main_window.cpp (layout,
+// input, re-runs, presets, mesh), main_window_menus.cpp, main_window_device.cpp (live OpenNI2),
+// main_window_sequence.cpp, main_window_fusion.cpp, results_export.cpp (File-menu exports).
 #include <QFuture>
 #include <QMainWindow>
 #include <QTimer>
@@ -23,12 +26,18 @@ class QComboBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
+class QDockWidget;
 class QPushButton;
+class QToolButton;
 
 namespace tunnelmap::ui {
 
+class CrossSectionPanel;
 class DepthViewWidget;
+class ProfilePlot;
+struct ReviewMap;
 class LiveView;
+class MessageLog;
 class ParameterPanel;
 class ResultsPanel;
 class TimelineWidget;
@@ -41,10 +50,16 @@ class MainWindow : public QMainWindow {
   explicit MainWindow(QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // All return false and show the error (status bar + message box) on failure.
+  // All return false and show the error (status bar + Messages dock) on failure.
   bool open_input(const QString& path);
-  bool select_frame(int index);  // shows frame `index` of the open input; false if out of range
-  bool load_preset(const QString& path);
+  // Shows frame `index` (0-based) of the open input on the timeline, results table, plot and 3D
+  // view at once; false if out of range. Every one of them calls this when clicked.
+  bool select_frame(int index);
+  bool step_frame(int delta);  // select_frame(shown + delta), clamped to the input
+  int frame_index() const { return frame_index_; }
+  TimelineWidget* timeline() const { return timeline_; }
+  bool load_preset(const QString& path);  // its name is shown in the title and status bar
+  QString preset_name() const { return preset_name_; }  // "defaults" until a preset is loaded
   bool save_preset(const QString& path);
   bool export_map_ply(const QString& path);
   bool export_planes_ply(const QString& path);
@@ -92,7 +107,8 @@ class MainWindow : public QMainWindow {
   ParameterPanel* parameter_panel() const { return params_; }
   View3DWidget* view3d() const { return view3d_; }
   ResultsPanel* results_panel() const { return results_; }
-  bool suppress_dialogs = false;  // --exit runs and tests: errors only in status bar / stderr
+  MessageLog* messages() const { return messages_; }  // every error shown, oldest first
+  bool suppress_dialogs = false;  // --exit runs and tests: never ask (confirmations take "no")
 
   // Dialog hooks, so tests can drive the real menu actions: the defaults show QFileDialog /
   // QMessageBox. A chooser returns the chosen path, or an empty string on cancel.
@@ -101,8 +117,31 @@ class MainWindow : public QMainWindow {
   PathChooser choose_save_path;  // exports, screenshot, Save preset…
   std::function<bool(const QString& path)> confirm_overwrite;  // true: replace the existing file
 
+  // Review sessions and workflow (main_window_session.cpp, docs/gui.md "Review sessions")
+  bool save_session(const QString& path);  // "tunnelmap-session/1" JSON, atomic
+  bool open_session(const QString& path);  // all of it, or one error naming the file and no change
+  bool export_view3d(const QString& path, int width, int height);  // the 3D scene alone, off-screen
+  void use_intrinsics(const QString& input, const Intrinsics& K);  // for the next open of `input`
+  bool set_intrinsics(const Intrinsics& K);  // re-reads the open PNG input; remembered per folder
+  ReadOptions read_options_for(const QString& input) const;
+  void build_session_actions(QMenu* file);
+  void save_view_settings();     // layers, method, camera into QSettings
+  void restore_view_settings();  // ... and back on the next start
+  std::shared_ptr<struct SessionState> session_;
+
+  // Review docks (main_window_review.cpp): the cross-section of the shown frame, the tunnel's
+  // profile from Processing > Map tunnel, View > Measure in 3D.
+  void map_tunnel();                    // posed datasets: the station map, on a worker thread
+  bool map_running() const;
+  // The frame that sees `station_m` best is shown, the cross-section cut there; false when no
+  // frame sees it (or no map of this input).
+  bool show_station(double station_m);
+  CrossSectionPanel* cross_section() const { return cross_section_; }
+  ProfilePlot* profile() const { return profile_; }
+
  signals:
   void frameShown();  // a pipeline result reached the views
+  void tunnelMapped(bool ok);
   void errorShown(const QString& message);
   void fusionFinished(bool ok);
 
@@ -113,6 +152,10 @@ class MainWindow : public QMainWindow {
 
  private:
   void build_menus();
+  void build_navigation(QWidget* views, QWidget* results);  // keys over the views and results
+  void update_plot_reference();  // ground truth of the dataset, else the design
+  void update_preset_status();   // title and status bar: input, preset, "(modified)"
+  void offer_matching_preset();  // the dataset's tunnel kind has a preset: offer it
   void show_error(const QString& message);
   void on_run_finished(const RunOutcome& outcome);
   void request_run(bool immediate);
@@ -127,13 +170,29 @@ class MainWindow : public QMainWindow {
   void start_fusion(bool refine_poses);
   void show_fused(bool reset_camera);  // the fused result at the poses View > Refined poses chooses
   void leave_fused_view();
+  void build_review_docks(QMenu* processing, QMenu* view);
+  void review_frame_shown();  // the cross-section follows the shown frame
 
   View3DWidget* view3d_;
   DepthViewWidget* depth_view_;
+  CrossSectionPanel* cross_section_ = nullptr;
+  ProfilePlot* profile_ = nullptr;
+  QDockWidget* cross_section_dock_ = nullptr;
+  QDockWidget* profile_dock_ = nullptr;
+  std::shared_ptr<ReviewMap> review_map_;
+  int review_frame_ = -1;
+  bool map_running_ = false;
   ParameterPanel* params_;
   ResultsPanel* results_;
   TimelineWidget* timeline_;
   QLabel* status_label_;
+  QLabel* preset_label_;
+  QPushButton* offer_preset_;
+  QString preset_name_ = "defaults";
+  Parameters preset_params_;  // the values the preset set (defaults: Parameters())
+  MessageLog* messages_;
+  QDockWidget* messages_dock_;
+  QToolButton* messages_button_;
   QProgressBar* progress_;
   QPushButton* cancel_button_;
   QMenu* recent_menu_ = nullptr;

@@ -2,13 +2,32 @@
 
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include "ui/parameter_row.h"
 
 namespace tunnelmap::ui {
+
+// One parameter change: undo restores the values before it, redo those after.
+class ParameterChange : public QUndoCommand {
+ public:
+  ParameterChange(ParameterPanel* panel, Parameters before, Parameters after, const QString& what)
+      : QUndoCommand(what), panel_(panel), before_(std::move(before)), after_(std::move(after)) {}
+  void undo() override { panel_->apply(before_); }
+  void redo() override {
+    if (first_) first_ = false;  // pushed after the change was made: already applied
+    else panel_->apply(after_);
+  }
+
+ private:
+  ParameterPanel* panel_;
+  Parameters before_, after_;
+  bool first_ = true;
+};
 
 namespace {
 QString group_title(const QString& prefix) {
@@ -17,11 +36,20 @@ QString group_title(const QString& prefix) {
   if (prefix == "grow") return QObject::tr("Plane growing (PG&&C)");
   if (prefix == "tunnel") return QObject::tr("Tunnel detection");
   if (prefix == "zones") return QObject::tr("Zones");
-  return prefix;
+  if (prefix == "baselines") return QObject::tr("Baselines (R&&L, Qhull)");
+  if (prefix == "map") return QObject::tr("Station map");
+  if (prefix == "fusion") return QObject::tr("Fusion");
+  return prefix;  // a group added to the table later still gets its rows
 }
 }  // namespace
 
 ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
+  undo_ = new QUndoStack(this);
+  confirm_reset = [this] {
+    return QMessageBox::question(this, tr("Reset all parameters?"),
+                                 tr("Set every parameter back to its default? (Edit > Undo brings them back.)"),
+                                 QMessageBox::Yes | QMessageBox::No, QMessageBox::No) == QMessageBox::Yes;
+  };
   auto* outer = new QVBoxLayout(this);
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
@@ -48,7 +76,11 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
       }
       emit parametersChanged(false);
     });
-    connect(row, &ParameterRow::editFinished, this, [this] { emit parametersChanged(true); });
+    const QString name = QString::fromStdString(spec.label.empty() ? spec.key : spec.label);
+    connect(row, &ParameterRow::editFinished, this, [this, name](const QString&) {
+      commit(tr("Change %1").arg(name));
+      emit parametersChanged(true);
+    });
   }
   layout->addStretch(1);
   scroll->setWidget(inner);
@@ -63,17 +95,37 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   buttons->addWidget(save);
   outer->addLayout(buttons);
   connect(reset_all, &QPushButton::clicked, this, [this] {
-    Parameters defaults;
-    set_parameters(defaults);
+    if (confirm_reset && !confirm_reset()) return;
+    set_parameters(Parameters(), tr("Reset all"));
   });
   connect(load, &QPushButton::clicked, this, &ParameterPanel::loadPresetRequested);
   connect(save, &QPushButton::clicked, this, &ParameterPanel::savePresetRequested);
 }
 
-void ParameterPanel::set_parameters(const Parameters& p) {
+void ParameterPanel::apply(const Parameters& p) {
   params_ = p;
+  committed_ = p;
   for (auto it = rows_.begin(); it != rows_.end(); ++it) it.value()->set_value(p.get(it.key().toStdString()));
   emit parametersChanged(true);
+}
+
+void ParameterPanel::commit(const QString& what) {
+  if (params_ == committed_) return;
+  Parameters before = committed_;
+  committed_ = params_;
+  undo_->push(new ParameterChange(this, std::move(before), params_, what));
+}
+
+void ParameterPanel::set_parameters(const Parameters& p, const QString& what) {
+  params_ = p;
+  for (auto it = rows_.begin(); it != rows_.end(); ++it) it.value()->set_value(p.get(it.key().toStdString()));
+  commit(what.isEmpty() ? tr("Set parameters") : what);
+  emit parametersChanged(true);
+}
+
+void ParameterPanel::set_initial_parameters(const Parameters& p) {
+  apply(p);
+  undo_->clear();
 }
 
 }  // namespace tunnelmap::ui

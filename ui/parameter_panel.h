@@ -1,10 +1,15 @@
 #pragma once
 // The parameter panel: one ParameterRow per entry of the core parameter table, grouped by the
-// key's prefix ("cloud", "normals", "grow", "tunnel", "zones"), plus reset-all and presets.
+// key's prefix ("cloud", "normals", "grow", "tunnel", "zones", ...), plus reset-all and presets.
+// Every completed change (slider released, spin box step, ↺, Reset all, preset) is one step on
+// an undo stack (Edit > Undo / Redo); a slider drag is one step, not one per pixel.
 #include <QMap>
 #include <QWidget>
+#include <functional>
 
 #include "core/params/parameters.h"
+
+class QUndoStack;
 
 namespace tunnelmap::ui {
 
@@ -16,8 +21,15 @@ class ParameterPanel : public QWidget {
   explicit ParameterPanel(QWidget* parent = nullptr);
 
   const Parameters& parameters() const { return params_; }
-  void set_parameters(const Parameters& p);  // updates every row, emits parametersChanged once
+  // Updates every row, emits parametersChanged once; an undoable step named `what` when the
+  // values change (presets, Reset all).
+  void set_parameters(const Parameters& p, const QString& what = QString());
+  // The values at start-up (saved settings): no undo step, the history starts empty.
+  void set_initial_parameters(const Parameters& p);
   ParameterRow* row(const QString& key) const { return rows_.value(key); }
+  QUndoStack* undo_stack() const { return undo_; }
+  // Asked before Reset all; false keeps the values. Default: a question box.
+  std::function<bool()> confirm_reset;
 
  signals:
   // `immediate`: the edit is complete (slider released, spin box committed, reset, preset):
@@ -27,7 +39,13 @@ class ParameterPanel : public QWidget {
   void savePresetRequested();
 
  private:
+  friend class ParameterChange;
+  void apply(const Parameters& p);  // rows + values + parametersChanged(true), no undo step
+  void commit(const QString& what);  // pushes committed_ -> params_ if they differ
+
   Parameters params_;
+  Parameters committed_;  // the values of the last undo step
+  QUndoStack* undo_;
   QMap<QString, ParameterRow*> rows_;
 };
 

@@ -52,7 +52,6 @@ ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget
   connect(slider_, &QSlider::valueChanged, this, [this](int s) {
     if (updating_) return;
     double v = from_slider(s);
-    if (spec_.key == "grow.neighbourhood_n" && static_cast<int>(v) % 2 == 0) v += 1;  // odd only
     set_value(v);
     emit valueEdited(QString::fromStdString(spec_.key), value());
   });

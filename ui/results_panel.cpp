@@ -3,20 +3,21 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QTableWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 
-#include "ui/results_plot.h"
 
 namespace tunnelmap::ui {
 
 ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
   auto* left = new QVBoxLayout;
-  table_ = new QTableWidget(0, 7, this);
+  table_ = new QTableWidget(0, 8, this);
   table_->setHorizontalHeaderLabels({tr("Frame"), tr("Status"), tr("Width (m)"), tr("Height (m)"),
-                                     tr("Planes"), tr("Time (ms)"), tr("Method")});
+                                     tr("Planes"), tr("Time (ms)"), tr("Method"), tr("Params")});
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -33,18 +34,63 @@ ResultsPanel::ResultsPanel(QWidget* parent) : QWidget(parent) {
   plot_ = new ResultsPlot(this);
   layout->addLayout(left, 3);
   layout->addWidget(plot_, 2);
-  connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row, int) {
-    if (row >= 0 && row < static_cast<int>(records_.size())) emit frameActivated(records_[row].index);
+  table_->setSelectionMode(QAbstractItemView::SingleSelection);
+  // A click on a row shows its frame (only user changes: set_current blocks the signal).
+  connect(table_, &QTableWidget::currentCellChanged, this, [this](int row, int, int, int) {
+    if (row >= 0 && row < static_cast<int>(records_.size()) && records_[row].index != current_)
+      emit frameActivated(records_[row].index);
   });
+  connect(plot_, &ResultsPlot::frameClicked, this, &ResultsPanel::frameActivated);
   refresh();
 }
 
 void ResultsPanel::clear() {
   records_.clear();
+  param_sets_.clear();
+  current_ = -1;
+  plot_->set_current(-1);
   refresh();
 }
 
-void ResultsPanel::set_record(const FrameRecord& record) {
+void ResultsPanel::set_frame_count(int count) { plot_->set_frame_count(count); }
+
+void ResultsPanel::set_current(int index) {
+  current_ = index;
+  plot_->set_current(index);
+  select_current_row();
+}
+
+int ResultsPanel::selected_frame() const {
+  const int row = table_->currentRow();
+  return row >= 0 && row < static_cast<int>(records_.size()) && table_->selectionModel()->isRowSelected(row, QModelIndex())
+             ? records_[row].index
+             : -1;
+}
+
+void ResultsPanel::select_current_row() {
+  const QSignalBlocker block(table_);
+  const auto it = std::find_if(records_.begin(), records_.end(), [&](const FrameRecord& r) { return r.index == current_; });
+  if (it == records_.end()) {
+    table_->clearSelection();
+    table_->setCurrentCell(-1, -1);
+    return;
+  }
+  const int row = static_cast<int>(it - records_.begin());
+  table_->setCurrentCell(row, 0);
+  table_->selectRow(row);
+  table_->scrollToItem(table_->item(row, 0));
+}
+
+void ResultsPanel::set_ground_truth(std::optional<double> width_m, std::optional<double> height_m) {
+  gt_width_m_ = width_m;
+  gt_height_m_ = height_m;
+  refresh();
+}
+
+void ResultsPanel::set_record(FrameRecord record, const Parameters& params) {
+  auto set = std::find(param_sets_.begin(), param_sets_.end(), params);
+  if (set == param_sets_.end()) set = param_sets_.insert(param_sets_.end(), params);
+  record.param_set = static_cast<int>(set - param_sets_.begin()) + 1;
   auto it = std::find_if(records_.begin(), records_.end(),
                          [&](const FrameRecord& r) { return r.index == record.index; });
   if (it != records_.end())
@@ -64,30 +110,64 @@ void ResultsPanel::set_pose_status(const QStringList& lines) {
 QString ResultsPanel::pose_status_text() const { return poses_->text(); }
 
 QString ResultsPanel::summary_text() const {
-  const RunningStats s = running_stats(records_);
-  if (s.detected == 0) return tr("%1 frame(s), no tunnel detected").arg(s.frames);
-  return tr("%1/%2 detected — width %3 (%4) m, height %5 (%6) m")
-      .arg(s.detected)
-      .arg(s.frames)
-      .arg(s.width_mean, 0, 'f', 3)
-      .arg(s.width_std, 0, 'f', 3)
-      .arg(s.height_mean, 0, 'f', 3)
-      .arg(s.height_std, 0, 'f', 3);
+  if (records_.empty()) return tr("no frame processed");
+  // Groups in order of first appearance: a mean over two methods or parameter sets means nothing.
+  std::vector<std::pair<Method, int>> groups;
+  for (const auto& r : records_)
+    if (std::find(groups.begin(), groups.end(), std::make_pair(r.method, r.param_set)) == groups.end())
+      groups.emplace_back(r.method, r.param_set);
+  QStringList lines;
+  for (const auto& [method, set] : groups) {
+    std::vector<FrameRecord> group;
+    for (const auto& r : records_)
+      if (r.method == method && r.param_set == set) group.push_back(r);
+    const RunningStats s = running_stats(group);
+    QString line = tr("%1, params #%2: ").arg(QString::fromUtf8(method_display_name(method))).arg(set);
+    if (s.detected == 0) {
+      lines << line + tr("%1 frame(s), no tunnel detected").arg(s.frames);
+      continue;
+    }
+    line += tr("%1/%2 detected — width %3 (%4) m, height %5 (%6) m")
+                .arg(s.detected)
+                .arg(s.frames)
+                .arg(s.width_mean, 0, 'f', 3)
+                .arg(s.width_std, 0, 'f', 3)
+                .arg(s.height_mean, 0, 'f', 3)
+                .arg(s.height_std, 0, 'f', 3);
+    if (gt_width_m_ && gt_height_m_) {
+      // As the CLI's detect summary: mean absolute error over the detected frames.
+      double ew = 0, eh = 0;
+      for (const auto& r : group)
+        if (r.detected) {
+          ew += std::abs(r.width_m - *gt_width_m_);
+          eh += std::abs(r.height_m - *gt_height_m_);
+        }
+      line += tr(", mean abs error %1 / %2 mm vs ground truth")
+                  .arg(ew / s.detected * 1000, 0, 'f', 1)
+                  .arg(eh / s.detected * 1000, 0, 'f', 1);
+    }
+    lines << line;
+  }
+  return lines.join('\n');
 }
 
 void ResultsPanel::refresh() {
+  const QSignalBlocker block(table_);  // rebuilding rows is no user selection
   table_->setRowCount(static_cast<int>(records_.size()));
   for (int row = 0; row < static_cast<int>(records_.size()); ++row) {
     const FrameRecord& r = records_[row];
     auto t = r.timings_ms.find("total");
-    const QStringList cells = {QString::number(r.index), QString::fromStdString(r.status),
+    // Frames numbered from 1, as on the timeline.
+    const QStringList cells = {QString::number(r.index + 1), QString::fromStdString(r.status),
                                r.detected ? QString::number(r.width_m, 'f', 3) : "–",
                                r.detected ? QString::number(r.height_m, 'f', 3) : "–",
                                QString::number(r.planes),
                                t == r.timings_ms.end() ? "–" : QString::number(t->second, 'f', 1),
-                               QString::fromUtf8(method_display_name(r.method))};
+                               QString::fromUtf8(method_display_name(r.method)),
+                               r.param_set > 0 ? QString("#%1").arg(r.param_set) : "–"};
     for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));
   }
+  select_current_row();
   summary_->setText(summary_text());
   plot_->set_records(records_);
 }

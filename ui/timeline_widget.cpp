@@ -2,10 +2,23 @@
 
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QProxyStyle>
 #include <QSlider>
 #include <QToolButton>
 
 namespace tunnelmap::ui {
+
+namespace {
+// The left button sets the slider to the clicked position (the platform style pages by 10).
+class JumpToClickStyle : public QProxyStyle {
+ public:
+  int styleHint(StyleHint hint, const QStyleOption* option, const QWidget* widget,
+                QStyleHintReturn* ret) const override {
+    if (hint == QStyle::SH_Slider_AbsoluteSetButtons) return Qt::LeftButton;
+    return QProxyStyle::styleHint(hint, option, widget, ret);
+  }
+};
+}  // namespace
 
 TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
@@ -21,6 +34,11 @@ TimelineWidget::TimelineWidget(QWidget* parent) : QWidget(parent) {
   fwd->setText("▶|");
   fwd->setToolTip(tr("Next frame"));
   slider_ = new QSlider(Qt::Horizontal, this);
+  slider_->setObjectName("timelineSlider");
+  auto* style = new JumpToClickStyle;
+  style->setParent(slider_);
+  slider_->setStyle(style);
+  slider_->setToolTip(tr("Click a frame to show it. Keys: ←/→ previous/next frame, PgUp/PgDn 10 frames, Home/End first/last"));
   label_ = new QLabel(this);
   layout->addWidget(back);
   layout->addWidget(play_);
@@ -60,6 +78,8 @@ void TimelineWidget::set_frame(int index) {
 }
 
 int TimelineWidget::frame() const { return slider_->value(); }
+
+QString TimelineWidget::label_text() const { return label_->text(); }
 
 void TimelineWidget::stop() {
   timer_.stop();

@@ -1,5 +1,7 @@
 #pragma once
-// Frame timeline for sequences: slider, step back/forward, play/pause.
+// Frame timeline for sequences: slider, step back/forward, play/pause. Frames are numbered from 1
+// on screen ("3 / 30"); indices are 0-based in code. A click on the groove jumps to the clicked
+// frame (not a page step).
 #include <QTimer>
 #include <QWidget>
 
@@ -18,6 +20,8 @@ class TimelineWidget : public QWidget {
   int frame() const;
   void stop();
   bool playing() const { return timer_.isActive(); }
+  QSlider* slider() const { return slider_; }
+  QString label_text() const;
 
  signals:
   void frameRequested(int index);

@@ -1,5 +1,6 @@
 #include "ui/view3d_widget.h"
 
+#include <QMouseEvent>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkTextProperty.h>
 
@@ -83,6 +84,43 @@ void View3DWidget::set_labels(const std::vector<Label>& labels) {
   }
   renderWindow()->Render();
   update();
+}
+
+void View3DWidget::set_measuring(bool on) {
+  measuring_ = on;
+  setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
+void View3DWidget::clear_measurement() {
+  if (scene_.measurement().picks.empty()) return;
+  scene_.set_measurement(scene::Measurement());
+  renderWindow()->Render();
+  update();
+  emit measurementChanged(QString());
+}
+
+bool View3DWidget::pick_at_widget(const QPoint& pixel) {
+  // The depth buffer must hold the scene as shown: render, then read it in VTK's display
+  // coordinates (device pixels, origin bottom-left).
+  renderWindow()->Render();
+  const double ratio = devicePixelRatioF();
+  const int* size = renderWindow()->GetSize();
+  const auto picked = scene_.pick_at(pixel.x() * ratio, size[1] - 1 - pixel.y() * ratio);
+  if (!picked) return false;
+  renderWindow()->Render();
+  update();
+  const auto& m = scene_.measurement();
+  emit measurementChanged(m.distance_m() ? QString::fromStdString(m.label()) : tr("first point picked"));
+  return true;
+}
+
+void View3DWidget::mousePressEvent(QMouseEvent* e) {
+  if (measuring_ && e->button() == Qt::LeftButton && e->modifiers() == Qt::NoModifier) {
+    pick_at_widget(e->pos());
+    e->accept();
+    return;
+  }
+  QVTKOpenGLNativeWidget::mousePressEvent(e);
 }
 
 QStringList View3DWidget::label_texts() const {

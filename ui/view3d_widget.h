@@ -38,11 +38,28 @@ class View3DWidget : public QVTKOpenGLNativeWidget {
   void set_labels(const std::vector<Label>& labels);
   QStringList label_texts() const;
 
+  // Measure tool (View > Measure in 3D): while on, a left click picks the surface under the
+  // cursor and two picks give their distance, drawn in the scene; the other buttons and the
+  // wheel still move the camera.
+  void set_measuring(bool on);
+  bool measuring() const { return measuring_; }
+  void clear_measurement();
+  // Picks at a widget pixel (what a click does); false over the background.
+  bool pick_at_widget(const QPoint& pixel);
+
+ signals:
+  // "1234.5 mm", "first point picked" or "" after a clear.
+  void measurementChanged(const QString& text);
+
+ protected:
+  void mousePressEvent(QMouseEvent* e) override;
+
  private:
   void finish_update(bool reset_camera);
 
   scene::TunnelScene scene_;
   std::vector<vtkSmartPointer<vtkBillboardTextActor3D>> labels_;
+  bool measuring_ = false;
 };
 
 }  // namespace tunnelmap::ui

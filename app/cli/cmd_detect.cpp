@@ -1,5 +1,5 @@
 // `tunnelmap-cli detect INPUT`: the whole pipeline on a frame or a sequence, one line per frame
-// and a summary; optional JSON results and the tunnel map as a PLY mesh.
+// and a summary; optional JSON and CSV results and the tunnel map as a PLY mesh.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +14,7 @@
 #include "core/io/frame_source.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/pipeline/sequence_runner.h"
+#include "core/report/results_csv.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
 #include "sensors/openni/device_frame_source.h"
@@ -24,6 +25,7 @@ namespace {
 struct DetectOptions {
   InputOptions in;
   std::string json_path;
+  std::string csv_path;
   std::string ply_path;
   bool quiet = false;
   std::string method = "pgc";  // pgc | ransac | qhull
@@ -34,7 +36,7 @@ struct DetectOptions {
 
 void print_frame_line(std::size_t index, const std::string& what, const FrameResult& r) {
   const TunnelMap& m = r.map;
-  if (m.status == "partial") {
+  if (m.status == TunnelStatus::Partial) {
     // "partial: height from context", then the values that are known.
     std::string dims;
     for (const auto& [name, src, value] :
@@ -54,14 +56,14 @@ void print_frame_line(std::size_t index, const std::string& what, const FrameRes
     std::printf("[%zu] %s: tunnel width %.4f m height %.4f m, %zu planes, %.1f ms\n", index, what.c_str(),
                 m.width_m, m.height_m, r.planes.planes.size(), r.timings_ms.at("total"));
   else
-    std::printf("[%zu] %s: no tunnel (%s%s%s), %zu planes, %.1f ms\n", index, what.c_str(), m.status.c_str(),
+    std::printf("[%zu] %s: no tunnel (%s%s%s), %zu planes, %.1f ms\n", index, what.c_str(), status_name(m.status),
                 m.reason.empty() ? "" : ": ", m.reason.c_str(), r.planes.planes.size(),
                 r.timings_ms.at("total"));
 }
 
 int run_detect(const DetectOptions& o) {
   Pipeline pipeline = o.in.pipeline();  // parameter errors before any reading
-  for (const std::string& out : {o.json_path, o.ply_path})
+  for (const std::string& out : {o.json_path, o.csv_path, o.ply_path})
     if (!out.empty()) check_output_path(out);
   const bool live = !o.device.empty();
   // One line each (CLI::RequiredError appends " is required" itself).
@@ -154,10 +156,11 @@ int run_detect(const DetectOptions& o) {
   }
 
   const nlohmann::json params = pipeline.params().to_json();
-  if (!o.json_path.empty()) {
+  if (!o.json_path.empty() || !o.csv_path.empty()) {
     nlohmann::json doc = detection_document(params, frames, summary, live ? o.device : o.in.input);
     doc["method"] = method_name(runner.method());
-    write_file_atomically(o.json_path, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
+    if (!o.json_path.empty()) write_detection_json(o.json_path, doc);
+    if (!o.csv_path.empty()) write_detection_csv(o.csv_path, doc);
   }
   if (!o.ply_path.empty()) {
     if (last_map)
@@ -177,6 +180,7 @@ void add_detect_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--device", o.device, "Live OpenNI2 device URI (see `devices`; \"default\" = the first one)");
   cmd->add_option("--frames", o.frames, "Frames to process from --device (default 30)")->check(CLI::PositiveNumber);
   cmd->add_option("--json", o.json_path, "Write per-frame results and a summary as JSON");
+  cmd->add_option("--csv", o.csv_path, "Write one row per frame as CSV (the JSON's main fields)");
   cmd->add_option("--ply", o.ply_path,
                   "Write the tunnel map (last detected frame, world frame when posed) as a binary PLY mesh");
   cmd->add_option("--threads", o.threads, "Worker threads for sequences (default 0 = all cores; 1 = serial)")

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/cli/commands.h"
+#include "core/baselines/baseline_options.h"
 #include "core/evaluation/protocol.h"
 #include "core/evaluation/report_csv.h"
 #include "core/evaluation/report_markdown.h"
@@ -88,27 +89,36 @@ int run(const EvaluateOptions& o) {
   if (o.seed < 0 || o.seed > 4294967295LL) throw ParameterError("evaluate: --seed out of range [0, 4294967295]");
   p.seed = static_cast<unsigned>(o.seed);
   p.presets_dir = find_presets_dir();
+  // --dataset runs: PG&C's preset. For every run the baselines' knobs are table keys
+  // (ransac.*, qhull.*): the preset may carry them, --ransac-step and --ransac-iterations are
+  // shorthands, range-checked by the table.
+  Parameters params;
+  if (!o.params_file.empty() && !o.datasets.empty()) params.load_json_file(o.params_file);
+  const auto shorthand = [&params](const char* flag, const ParameterKey<int>& key, int value) {
+    try {
+      params.set(key, value);
+    } catch (const ParameterError& e) {
+      throw ParameterError(std::string("evaluate: ") + flag + ": " + e.what());
+    }
+  };
   if (o.protocol == "ci") {  // the reduced protocol the CI test runs (docs/evaluation.md)
     p.frames_per_cell = 3;
     p.ransac_frames_per_cell = 1;
-    p.baselines.ransac.sample_step = 8;
+    params.set(baseline_keys::ransac_sample_step, 8);
   } else if (o.protocol == "sweeps") {  // 27 sweep values: keep the run within minutes
     p.frames_per_cell = 2;
     p.ransac_frames_per_cell = 1;
-    p.baselines.ransac.sample_step = 2;
+    params.set(baseline_keys::ransac_sample_step, 2);
   }
   if (o.frames) p.frames_per_cell = *o.frames;
   if (o.ransac_frames) p.ransac_frames_per_cell = *o.ransac_frames;
-  if (o.ransac_step) p.baselines.ransac.sample_step = *o.ransac_step;
-  if (o.ransac_iterations) p.baselines.ransac.iterations = *o.ransac_iterations;
+  if (o.ransac_step) shorthand("--ransac-step", baseline_keys::ransac_sample_step, *o.ransac_step);
+  if (o.ransac_iterations) shorthand("--ransac-iterations", baseline_keys::ransac_iterations, *o.ransac_iterations);
+  p.baselines = baseline_options(params);
   if (p.frames_per_cell < 1 || p.frames_per_cell > 1000)
     throw ParameterError("evaluate: --frames must be in [1, 1000]");
   if (p.ransac_frames_per_cell < 0 || p.ransac_frames_per_cell > 1000)
     throw ParameterError("evaluate: --ransac-frames must be in [0, 1000]");
-  if (p.baselines.ransac.sample_step < 1 || p.baselines.ransac.sample_step > 64)
-    throw ParameterError("evaluate: --ransac-step must be in [1, 64]");
-  if (p.baselines.ransac.iterations < 1 || p.baselines.ransac.iterations > 100000)
-    throw ParameterError("evaluate: --ransac-iterations must be in [1, 100000]");
   if (!o.quiet) p.progress = [](const std::string& line) { std::printf("%s\n", line.c_str()); std::fflush(stdout); };
   if (!o.quiet && o.datasets.empty()) std::printf("presets: %s\n", p.presets_dir.c_str());
 
@@ -124,8 +134,6 @@ int run(const EvaluateOptions& o) {
 
   std::vector<CellResult> results;
   if (!o.datasets.empty()) {
-    Parameters params;
-    if (!o.params_file.empty()) params.load_json_file(o.params_file);
     for (const std::string& d : o.datasets) {
       auto part = run_dataset(d, params, p);
       results.insert(results.end(), part.begin(), part.end());
@@ -174,8 +182,8 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--sweep", o.sweeps, "Sweeps to run with --protocol sweeps (default all)");
   cmd->add_option("--frames", o.frames, "Frames per cell (per pose for sweeps)");
   cmd->add_option("--ransac-frames", o.ransac_frames, "R&L frames per cell (it is slow by design)");
-  cmd->add_option("--ransac-step", o.ransac_step, "R&L uses every N-th pixel in u and v (default 4)");
-  cmd->add_option("--ransac-iterations", o.ransac_iterations, "R&L RANSAC + LSE repetitions (default 100, the paper's)");
+  cmd->add_option("--ransac-step", o.ransac_step, "R&L uses every N-th pixel in u and v (ransac.sample_step)");
+  cmd->add_option("--ransac-iterations", o.ransac_iterations, "R&L RANSAC + LSE repetitions (ransac.iterations, default 100, the paper's)");
   cmd->add_option("--seed", o.seed, "Simulator seed")->capture_default_str();
   cmd->add_flag("--check", o.check, "Exit with code 1 when an acceptance bound fails");
   cmd->add_flag("--quiet,-q", o.quiet, "Only print the final line");

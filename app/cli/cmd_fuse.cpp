@@ -10,6 +10,7 @@
 #include "core/export/map_ply.h"
 #include "core/export/mesh_ply.h"
 #include "core/fusion/fuse_dataset.h"
+#include "core/fusion/fusion_options.h"
 #include "core/fusion/mesh_accuracy.h"
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
@@ -85,7 +86,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
   };
   FusionResult r = fuse_dataset(ds, params, s);
   MeshStats ms;
-  const TriangleMesh mesh = extract_mesh(*r.volume, params.get_int("fusion.min_weight"), &ms);
+  const TriangleMesh mesh = extract_mesh(*r.volume, fusion_options(params).min_weight, &ms);
   r.timings_ms["mesh"] = ms.milliseconds;
 
   const nlohmann::json pj = params.to_json();

@@ -19,7 +19,7 @@
 #include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/kinematics/robot_json.h"
-#include "core/mapping/posed_sequence.h"
+#include "core/mapping/dataset_mapping.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/report/results_json.h"
 #include "core/report/station_map_json.h"
@@ -64,12 +64,12 @@ std::pair<double, double> parse_design(const std::string& text) {
 Parameters map_parameters(const MapOptions& o) {
   Parameters p = o.in.parameters();
   // The flags are parameter-table keys (presets may carry a design): range checks included.
-  if (o.station_step) p.set("map.station_step_m", *o.station_step);
-  if (o.tolerance_mm) p.set("map.tolerance_mm", *o.tolerance_mm);
+  if (o.station_step) p.set(map_keys::station_step_m, *o.station_step);
+  if (o.tolerance_mm) p.set(map_keys::tolerance_mm, *o.tolerance_mm);
   if (!o.design.empty()) {
     const auto [w, h] = parse_design(o.design);
-    p.set("tunnel.design_width_m", w);
-    p.set("tunnel.design_height_m", h);
+    p.set(tunnel_keys::design_width_m, w);
+    p.set(tunnel_keys::design_height_m, h);
   }
   return p;
 }
@@ -169,61 +169,25 @@ void run(const MapOptions& o, CliContext& ctx) {
 #endif
   for (const std::string& p : {o.json_path, o.csv_path, o.ply_path, o.report_path})
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
-  const int n = static_cast<int>(ds.frames.size());
-  if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
-  std::vector<Eigen::Isometry3d> poses;
-  for (int i = 0; i < n; ++i) {
-    const ResolvedPose rp = resolve_frame_pose(ds, static_cast<std::size_t>(i));
-    if (!rp.pose)
-      throw InputError(ds.json_path, "frames[" + std::to_string(i) +
-                                         "] has neither \"pose\" nor \"joints\": the map needs "
-                                         "every camera pose");
-    poses.push_back(*rp.pose);
-  }
-  pipeline.set_world_up(ds.up);
-
-  // Detection first (frames in order, one at a time: memory stays flat), keeping each frame's
-  // map and compact wall samples; then the poses refined against the map and the map itself.
-  std::vector<TunnelMap> maps(static_cast<std::size_t>(n));
-  std::vector<FrameWalls> walls(static_cast<std::size_t>(n));
-  std::vector<std::string> sources(static_cast<std::size_t>(n));
-  std::vector<std::size_t> plane_counts(static_cast<std::size_t>(n));
-  std::vector<StageTimings> timings(static_cast<std::size_t>(n));
-  Progress progress(static_cast<std::size_t>(n));
-  double detect_ms = 0.0, extract_ms = 0.0;
-  FrameResult result;
-  for (int i = 0; i < n; ++i) {
-    const std::size_t k = static_cast<std::size_t>(i);
-    DepthFrame f = ds.load_frame(k);
-    f.pose = poses[k];  // the world frame for up
-    pipeline.run(f, result);
-    detect_ms += result.timings_ms.at("total");
-    const auto t_extract = std::chrono::steady_clock::now();
-    extract_frame_walls(result, walls[k]);
-    extract_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_extract).count();
-    maps[k] = result.map;
-    sources[k] = f.source;
-    plane_counts[k] = result.planes.planes.size();
-    timings[k] = result.timings_ms;
-    progress.step(k + 1);
-  }
-  MappedSequence mapped = map_posed_sequence(maps, walls, poses, params, !o.no_pose_refinement);
-  StationMap& m = mapped.stations;
-  const double map_ms = mapped.map_ms + extract_ms;  // everything beyond detection
-  m.timings_ms["map"] = map_ms;
+  Progress progress(ds.frames.size());
+  DatasetMapping dm = map_dataset(ds, pipeline, !o.no_pose_refinement,
+                                  [&](std::size_t done) { progress.step(done); });
+  const MappedSequence& mapped = dm.mapped;
+  const StationMap& m = mapped.stations;
+  const int n = static_cast<int>(dm.maps.size());
   nlohmann::json frames = nlohmann::json::array();
-  for (std::size_t k = 0; k < maps.size(); ++k) {
+  for (std::size_t k = 0; k < dm.maps.size(); ++k) {
     FrameResult r;  // the per-frame object of detect --json, with the context applied
-    r.map = maps[k];
-    r.planes.planes.resize(plane_counts[k]);
-    r.timings_ms = timings[k];
-    nlohmann::json fj = detection_frame_json(k, sources[k], r);
+    r.map = dm.maps[k];
+    r.planes.planes.resize(dm.plane_counts[k]);
+    r.timings_ms = dm.timings[k];
+    nlohmann::json fj = detection_frame_json(k, dm.sources[k], r);
     fj["camera_to_world"] = isometry_to_json(mapped.poses[k]);
     frames.push_back(fj);
   }
 
   const nlohmann::json pj = params.to_json();
-  if (!o.quiet) print_summary(m, mapped.refinement, detect_ms, map_ms, n);
+  if (!o.quiet) print_summary(m, mapped.refinement, dm.detect_ms, dm.map_ms, n);
   if (!m.ok && (!o.ply_path.empty() || !o.report_path.empty()))
     throw InputError(o.in.input, "no map to write: " + m.reason);
   if (!o.json_path.empty())

@@ -75,10 +75,10 @@ int run_planes(const PlanesOptions& o) {
       const auto start = std::chrono::steady_clock::now();
       {
         StageTimer t(cloud.timings_ms, "cloud");
-        build_cloud(frame, cloud_options(params), cloud);
+        build_cloud(frame, cloud_options(params), cloud, r.scratch.cloud);
       }
-      estimate_normals(normal_options(params), cloud);
-      r.planes = extract_planes(cloud, grow_options(params));
+      estimate_normals(normal_options(params), cloud, r.scratch.normals);
+      extract_planes(cloud, grow_options(params), r.planes, r.scratch.planes);
       samples["total"].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
       for (const StageTimings* stages : {&cloud.timings_ms, &r.planes.timings_ms})
         for (const auto& [stage, ms] : *stages) samples[stage].push_back(ms);

@@ -56,7 +56,7 @@ void add_read_options(CLI::App* cmd, InputOptions& opt) {
 Parameters InputOptions::parameters() const {
   Parameters p;
   if (!params_file.empty()) p.load_json_file(params_file);
-  for (const std::string& s : sets) p.set_from_string(s);
+  p.set_from_strings(sets);  // all at once: the rules hold after the whole list
   return p;
 }
 

@@ -1,5 +1,6 @@
-// tunnelmap-render: renders the GUI's 3D scene of one processed frame, or a map mesh PLY, to a
-// PNG through OSMesa, with no X server and no DISPLAY. `tunnelmap-cli render ARGS...` execs this
+// tunnelmap-render: renders the GUI's 3D scene of one processed frame, a dataset's station map
+// (--map, optionally over a fused mesh), or a map mesh PLY, to a PNG through OSMesa, with no X
+// server and no DISPLAY. `tunnelmap-cli render ARGS...` execs this
 // binary.
 // Exit codes as tunnelmap-cli: 0 ok, 2 bad usage, 3 bad input, 4 internal/rendering error.
 #include <CLI/CLI.hpp>
@@ -9,6 +10,7 @@
 #include "app/render/map_mesh.h"
 #include "app/render/mesh_view.h"
 #include "app/render/osmesa_window.h"
+#include "app/render/render_map.h"
 #include "app/render/render_options.h"
 #include "core/io/frame_source.h"
 #include "core/util/error.h"
@@ -22,7 +24,7 @@ using namespace tunnelmap;
 // A map mesh PLY: the mesh layer only (unless --layers says otherwise), framed by the tunnel the
 // mesh's walls describe, with a light kit so that no face turned from the camera goes black.
 int run_mesh(const render::RenderOptions& opt) {
-  const render::MapMesh mesh = render::load_map_mesh(opt.input);
+  const render::MapMesh mesh = render::load_map_mesh(opt.in.input);
   render::OsMesaWindow window(opt.width, opt.height);
   scene::TunnelScene scene;
   scene::SceneGeometry geometry;
@@ -54,14 +56,12 @@ int run_mesh(const render::RenderOptions& opt) {
 }
 
 int run(const render::RenderOptions& opt) {
-  if (render::is_mesh_input(opt.input)) return run_mesh(opt);
-  Parameters params;
-  if (!opt.params_file.empty()) params.load_json_file(opt.params_file);
-  for (const auto& s : opt.sets) params.set_from_string(s);
-  ReadOptions read;
-  read.depth_units_per_m = opt.depth_scale;
-  auto source = open_input(opt.input, read);
-  const Pipeline pipeline = scene::make_pipeline(*source, params);
+  if (opt.map) return render::run_station_map(opt);
+  if (!opt.mesh.empty()) throw ParameterError("--mesh goes with --map (a mesh PLY alone is drawn as INPUT)");
+  if (render::is_mesh_input(opt.in.input)) return run_mesh(opt);
+  auto source = open_input(opt.in.input, opt.in.read_options());
+  Pipeline pipeline = opt.in.pipeline();  // parameters and camera up, as `detect` builds them
+  if (const Dataset* ds = source->dataset()) pipeline.set_world_up(ds->up);
   const scene::ProcessedFrame processed = scene::process_frame(*source, opt.frame, pipeline);
 
   render::OsMesaWindow window(opt.width, opt.height);
@@ -96,29 +96,31 @@ int run(const render::RenderOptions& opt) {
 
 int main(int argc, char** argv) {
   render::RenderOptions opt;
-  CLI::App app{"Renders the 3D inspection scene of one frame, or a map mesh PLY, to a PNG, headless "
+  CLI::App app{"Renders the 3D inspection scene of one frame, the station map of a posed dataset (--map), or a mesh PLY, to a PNG, headless "
                "(OSMesa)",
                "tunnelmap-render"};
   std::string view = "along", size = "1280x720", layers;
-  app.add_option("input", opt.input, "Depth PNG, organised PCD, dataset folder, or map mesh PLY")->required();
+  cli::add_input_options(&app, opt.in);  // INPUT: also a map or fused mesh PLY, drawn as it is
   app.add_option("--screenshot", opt.screenshot, "Output PNG")->required();
   auto* view_option = app.add_option("--view", view, "Camera: along | side | top | reset | oblique "
                                      "(default: along; oblique for a mesh PLY)");
   app.add_option("--size", size, "Image size WIDTHxHEIGHT")->capture_default_str();
   app.add_option("--layers", layers,
                  "Comma-separated layers: cloud,mesh,planes,boundary,traversable,forbidden,"
-                 "frustum,axes,legend (default: all)");
-  app.add_option("--params", opt.params_file, "Parameter preset JSON");
-  app.add_option("--set", opt.sets, "Parameter KEY=VALUE (repeatable)");
+                 "frustum,axes,legend,grid (default: all)");
   app.add_option("--frame", opt.frame, "Frame index in a sequence")->capture_default_str();
   app.add_option("--max-points", opt.max_points,
                  "Point layers keep at most this many pixels each, as in the GUI (0: all)")
       ->capture_default_str();
-  app.add_option("--depth-scale", opt.depth_scale, "Depth PNG units per metre")->capture_default_str();
+  app.add_flag("--map", opt.map,
+               "Draw the station map of a posed dataset (as `tunnelmap-cli map` builds it) instead of one frame");
+  app.add_option("--mesh", opt.mesh, "With --map: a fused mesh PLY (`fuse --ply`) drawn under the map");
+  app.add_flag("--no-pose-refinement", opt.no_pose_refinement, "With --map: the poses as given");
   try {
     app.parse(argc, argv);
     opt.view = scene::parse_view(view);
-    if (view_option->count() == 0 && render::is_mesh_input(opt.input)) opt.view = scene::ViewPreset::Oblique;
+    if (view_option->count() == 0 && (opt.map || render::is_mesh_input(opt.in.input)))
+      opt.view = scene::ViewPreset::Oblique;
     render::parse_size(size, opt.width, opt.height);
     if (!layers.empty()) opt.layers = scene::parse_layers(layers);
   } catch (const CLI::ParseError& e) {

@@ -84,7 +84,7 @@ TunnelMap frame_of(const PlyMesh& mesh) {
 
   TunnelMap frame;
   frame.detected = true;
-  frame.status = "ok";
+  frame.status = TunnelStatus::Ok;
   frame.axis_point = centre;
   frame.axis_dir = axis;
   frame.up = up;

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/input_options.h"
 #include "ui/scene/camera_presets.h"
 #include "ui/scene/scene_geometry.h"
 #include "ui/scene/scene_layers.h"
@@ -10,15 +11,17 @@
 namespace tunnelmap::render {
 
 struct RenderOptions {
-  std::string input;
+  // INPUT and the input options of `detect`: --params, --set, --intrinsics, --depth-scale, --up,
+  // --max-time-diff, --world-up.
+  cli::InputOptions in;
   std::string screenshot;
   scene::ViewPreset view = scene::ViewPreset::Along;
   int width = 1280, height = 720;
   std::vector<scene::Layer> layers;  // default: everything
-  std::string params_file;
-  std::vector<std::string> sets;     // KEY=VALUE
   std::size_t frame = 0;
-  double depth_scale = 1000.0;
+  bool map = false;                  // draw the dataset's station map instead of one frame
+  std::string mesh;                  // with map: the fused mesh PLY drawn under the map
+  bool no_pose_refinement = false;   // with map: the poses as given
   int max_points = scene::kDefaultDisplayPoints;  // point-layer decimation, as in the GUI
 };
 

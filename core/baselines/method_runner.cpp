@@ -4,8 +4,10 @@
 
 namespace tunnelmap {
 
-MethodRunner::MethodRunner(Method method, Parameters params, BaselineOptions baselines)
-    : method_(method), pipeline_(std::move(params)), baselines_(baselines) {}
+MethodRunner::MethodRunner(Method method, Parameters params, std::optional<BaselineOptions> baselines)
+    : method_(method),
+      pipeline_(std::move(params)),
+      baselines_(baselines ? *baselines : baseline_options(pipeline_.params())) {}
 
 void MethodRunner::set_world_up(const Eigen::Vector3d& up) {
   world_up_ = up.normalized();

@@ -3,6 +3,7 @@
 // pipeline (cloud, planes, map, timings) so that CLI, GUI and evaluation treat all three alike.
 #include <optional>
 
+#include "core/baselines/baseline_options.h"
 #include "core/baselines/method.h"
 #include "core/baselines/qhull_tunnel.h"
 #include "core/baselines/ransac_lse.h"
@@ -10,15 +11,11 @@
 
 namespace tunnelmap {
 
-struct BaselineOptions {
-  RansacLseOptions ransac;
-  QhullOptions qhull;
-};
-
 class MethodRunner {
  public:
+  // Without `baselines`, the baselines' options come from `params` (ransac.*, qhull.*).
   explicit MethodRunner(Method method, Parameters params = Parameters(),
-                        BaselineOptions baselines = BaselineOptions());
+                        std::optional<BaselineOptions> baselines = std::nullopt);
 
   Method method() const { return method_; }
   const Parameters& params() const { return pipeline_.params(); }

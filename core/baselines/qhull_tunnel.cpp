@@ -99,7 +99,7 @@ Alignment best_alignment(const std::vector<Eigen::Vector3d>& hull, const RoughTu
   return best;
 }
 
-void fail(TunnelMap& m, const std::string& status, const std::string& reason) {
+void fail(TunnelMap& m, TunnelStatus status, const std::string& reason) {
   m.detected = false;
   m.status = status;
   m.reason = reason;
@@ -126,13 +126,13 @@ void run(const OrganizedCloud& cloud, const Eigen::Vector3d& up_camera, const Tu
     }
   out.input_points = static_cast<int>(pts.size() / 3);
   if (out.input_points < o.min_points) {
-    fail(map, "too_few_points", fmt("%.0f valid points, at least %.0f needed", out.input_points, o.min_points));
+    fail(map, TunnelStatus::TooFewPoints, fmt("%.0f valid points, at least %.0f needed", out.input_points, o.min_points));
     return;
   }
   const std::vector<Eigen::Vector3d> hull = convex_hull_vertices(pts);
   out.hull_vertices = static_cast<int>(hull.size());
   if (hull.size() < 4) {
-    fail(map, "degenerate_hull", "qhull found no 3D hull (points coplanar or too few)");
+    fail(map, TunnelStatus::DegenerateHull, "qhull found no 3D hull (points coplanar or too few)");
     return;
   }
   const Alignment a = best_alignment(hull, rough, o);
@@ -152,20 +152,20 @@ void run(const OrganizedCloud& cloud, const Eigen::Vector3d& up_camera, const Tu
   build_wall_geometry(tf, off, a.lo_a, a.hi_a, opt.forbidden_band_m, map);
   if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m ||
       map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
-    fail(map, "out_of_template", fmt("hull %.3f x %.3f m outside the template window", map.width_m, map.height_m));
+    fail(map, TunnelStatus::OutOfTemplate, fmt("hull %.3f x %.3f m outside the template window", map.width_m, map.height_m));
     return;
   }
   if (context && ((context->has_width() &&
                    std::abs(map.width_m - context->width_m()) > opt.context_tolerance_m) ||
                   (context->has_height() &&
                    std::abs(map.height_m - context->height_m()) > opt.context_tolerance_m))) {
-    fail(map, "inconsistent_with_context",
+    fail(map, TunnelStatus::InconsistentWithContext,
          fmt("hull %.3f x %.3f m differs from the context by more than %.0f mm", map.width_m,
              map.height_m, opt.context_tolerance_m * 1000.0));
     return;
   }
   map.detected = true;
-  map.status = "ok";
+  map.status = TunnelStatus::Ok;
   map.width_source = map.height_source = DimensionSource::Measured;
   for (Wall& w : map.walls)
     if (w.found) w.source = DimensionSource::Measured;

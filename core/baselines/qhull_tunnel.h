@@ -6,17 +6,11 @@
 #include <Eigen/Core>
 
 #include "core/frame/organized_cloud.h"
+#include "core/baselines/baseline_options.h"  // QhullOptions
 #include "core/tunnel/tunnel_detector.h"
 #include "core/tunnel/tunnel_map.h"
 
 namespace tunnelmap {
-
-struct QhullOptions {
-  int sample_step = 1;            // every step-th pixel in u and v (1 = all points)
-  int min_points = 1000;          // fewer valid points: "too_few_points"
-  double yaw_range_deg = 35.0;    // axis search about up, around the camera's forward direction
-  double tilt_range_deg = 20.0;   // axis search towards up
-};
 
 struct QhullTunnelResult {
   TunnelMap map;

@@ -6,20 +6,10 @@
 #include <cstdint>
 
 #include "core/frame/organized_cloud.h"
+#include "core/baselines/baseline_options.h"  // RansacLseOptions
 #include "core/planes/plane_segment.h"
 
 namespace tunnelmap {
-
-struct RansacLseOptions {
-  int iterations = 100;        // whole RANSAC + LSE segmentations (paper: 100)
-  int sample_step = 1;         // every step-th pixel in u and v (1: the whole frame, as the paper)
-  double distance_m = 0.015;   // inlier band, the paper's point-to-plane distance
-  int max_planes = 8;          // planes extracted per segmentation
-  int min_plane_points = 40;   // sampled points; fewer inliers end the extraction
-  int max_trials = 1000;       // RANSAC hypotheses per plane (adaptive, 99 % confidence)
-  double confidence = 0.99;
-  std::uint32_t seed = 1;      // fixed: results are reproducible
-};
 
 struct RansacLseResult {
   PlaneSegments planes;        // PlaneSegment::points = inliers x sample_step^2 (pixels covered)

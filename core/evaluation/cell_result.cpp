@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/report/statistics.h"
+
 namespace tunnelmap {
 
 double CellResult::mean_abs_error_mm() const {
@@ -23,28 +25,14 @@ void CellAccumulator::add(const FrameResult& r, const std::vector<std::uint16_t>
   }
 }
 
-namespace {
-void mean_std(const std::vector<double>& v, double& mean, double& sd) {
-  mean = sd = 0;
-  if (v.empty()) return;
-  for (double x : v) mean += x;
-  mean /= v.size();
-  for (double x : v) sd += (x - mean) * (x - mean);
-  sd = std::sqrt(sd / v.size());  // population sigma, like the paper's table
-}
-double mean_abs_error(const std::vector<double>& v, double truth) {
-  if (v.empty()) return 0;
-  double s = 0;
-  for (double x : v) s += std::abs(x - truth);
-  return s / v.size();
-}
-}  // namespace
-
 void CellAccumulator::finish(CellResult& out) const {
   out.frames = frames_;
   out.detected = static_cast<int>(widths_.size());
-  mean_std(widths_, out.width_mean_m, out.width_std_m);
-  mean_std(heights_, out.height_mean_m, out.height_std_m);
+  const MeanSigma w = mean_sigma(widths_), h = mean_sigma(heights_);  // sample sigma, Table 1
+  out.width_mean_m = w.mean;
+  out.width_std_m = w.sigma;
+  out.height_mean_m = h.mean;
+  out.height_std_m = h.sigma;
   if (out.gt_width_m) out.width_abs_error_m = mean_abs_error(widths_, *out.gt_width_m);
   if (out.gt_height_m) out.height_abs_error_m = mean_abs_error(heights_, *out.gt_height_m);
   double ms = 0;

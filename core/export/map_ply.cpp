@@ -92,7 +92,7 @@ std::string header(const std::vector<const TunnelMap*>& maps, const nlohmann::js
   const TunnelMap& map = *maps.front();
   h << "comment width_m " << number_text(map.width_m) << " height_m " << number_text(map.height_m)
     << "\n";
-  h << "comment status " << one_line(map.status) << "\n";
+  h << "comment status " << status_name(map.status) << "\n";
   if (maps.size() > 1) {
     h << "comment sections " << maps.size() << "\n";
     for (std::size_t i = 0; i < maps.size(); ++i)

@@ -98,7 +98,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     r.frames[i].map = std::move(maps[i]);
     scans.push_back({r.frames[i].map, r.frames[i].camera_to_world, r.frames[i].index});
   }
-  if (s.detect) r.merged = merge_scans(scans, groups, params.get("tunnel.zone_cluster_mm") / 1000.0);
+  if (s.detect) r.merged = merge_scans(scans, groups, tunnel_options(params).zone_cluster_m);
   r.timings_ms["total"] = ms_since(t0);
   return r;
 }

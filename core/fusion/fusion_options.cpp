@@ -7,18 +7,33 @@
 
 namespace tunnelmap {
 
+bool operator==(const FusionOptions& a, const FusionOptions& b) {
+  return a.voxel_m == b.voxel_m && a.truncation_m == b.truncation_m && a.min_depth_m == b.min_depth_m &&
+         a.max_depth_m == b.max_depth_m && a.max_weight == b.max_weight && a.min_weight == b.min_weight &&
+         a.bounds_margin_m == b.bounds_margin_m && a.max_extent_m == b.max_extent_m &&
+         a.pose_group_m == b.pose_group_m;
+}
+
 FusionOptions fusion_options(const Parameters& p) {
+  using namespace fusion_keys;
   FusionOptions o;
-  o.voxel_m = p.get("fusion.voxel_mm") / 1000.0;
-  o.truncation_m = p.get("fusion.truncation_mm") / 1000.0;
-  o.min_depth_m = p.get("cloud.min_range_m");
-  o.max_depth_m = p.get("fusion.max_depth_m");
-  o.max_weight = p.get_int("fusion.max_weight");
-  o.min_weight = p.get_int("fusion.min_weight");
-  o.bounds_margin_m = p.get("fusion.bounds_margin_m");
-  o.max_extent_m = p.get("fusion.max_extent_m");
-  o.pose_group_m = p.get("fusion.pose_group_mm") / 1000.0;
+  o.voxel_m = mm_to_m(p.get(voxel_mm));
+  o.truncation_m = mm_to_m(p.get(truncation_mm));
+  o.min_depth_m = p.get(cloud_keys::min_range_m);
+  o.max_depth_m = p.get(max_depth_m);
+  o.max_weight = p.get(max_weight);
+  o.min_weight = p.get(min_weight);
+  o.bounds_margin_m = p.get(bounds_margin_m);
+  o.max_extent_m = p.get(max_extent_m);
+  o.pose_group_m = mm_to_m(p.get(pose_group_mm));
   return o;
+}
+
+ParameterGroup fusion_parameter_group() {
+  using namespace fusion_keys;
+  return {{voxel_mm.spec(), truncation_mm.spec(), max_depth_m.spec(), max_weight.spec(), min_weight.spec(),
+           bounds_margin_m.spec(), max_extent_m.spec(), pose_group_mm.spec()},
+          {}};
 }
 
 TsdfOptions tsdf_options(const FusionOptions& o) {
@@ -50,7 +65,7 @@ VoxelGrid fusion_grid(const Eigen::AlignedBox3d& box, const FusionOptions& o) {
   const Eigen::Vector3d size = hi - lo;
   if (size.maxCoeff() > o.max_extent_m)
     throw ParameterError("fusion: the data spans " + std::to_string(size.maxCoeff()) +
-                         " m, more than fusion.max_extent_m = " + std::to_string(o.max_extent_m));
+                         " m, more than " + std::string(fusion_keys::max_extent_m.key) + " = " + std::to_string(o.max_extent_m));
   VoxelGrid g;
   g.voxel_m = o.voxel_m;
   g.origin = lo;

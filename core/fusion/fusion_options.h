@@ -1,26 +1,60 @@
 #pragma once
-// Fusion settings from the parameter table (fusion.*), and the volume that encloses the data.
+// Fusion's parameters (fusion.*), declared once, its options, and the volume that encloses the data.
 #include <Eigen/Geometry>
 
 #include "core/frame/depth_frame.h"
 #include "core/fusion/tsdf_volume.h"
+#include "core/normals/cloud_options.h"
+#include "core/params/parameter_key.h"
 #include "core/params/parameters.h"
 
 namespace tunnelmap {
 
+namespace fusion_keys {
+// Not from the paper: sensible values for a VGA structured-light camera in a ~1 m tunnel
+// (docs/fusion.md).
+inline constexpr ParameterKey<double> voxel_mm{
+    "fusion.voxel_mm", "mm", 8.0, 2.0, 50.0, 0.5, Stage::Fusion, "Voxel size",
+    "Edge of one TSDF voxel; memory grows with its inverse cube"};
+inline constexpr ParameterKey<double> truncation_mm{
+    "fusion.truncation_mm", "mm", 30.0, 5.0, 200.0, 1.0, Stage::Fusion, "Truncation",
+    "TSDF truncation distance; at least ~3 voxels and above the depth noise"};
+inline constexpr ParameterKey<double> max_depth_m{
+    "fusion.max_depth_m", "m", 2.5, 0.5, 10.0, 0.1, Stage::Fusion, "Fusion max depth",
+    "Depth beyond this is not fused (structured-light noise grows with depth squared)"};
+inline constexpr ParameterKey<int> max_weight{
+    "fusion.max_weight", "", 64, 1, 10000, 1, Stage::Fusion, "Max weight",
+    "Cap of a voxel's running-average weight (frames); lower adapts faster to pose changes"};
+inline constexpr ParameterKey<int> min_weight{
+    "fusion.min_weight", "", 2, 1, 1000, 1, Stage::Fusion, "Min weight",
+    "Mesh only cells whose 8 voxels were seen at least this many times"};
+inline constexpr ParameterKey<double> bounds_margin_m{
+    "fusion.bounds_margin_m", "m", 0.05, 0.0, 2.0, 0.01, Stage::Fusion, "Bounds margin",
+    "The volume is the box of all fused points (world frame) grown by this margin"};
+inline constexpr ParameterKey<double> max_extent_m{
+    "fusion.max_extent_m", "m", 12.0, 0.5, 100.0, 0.5, Stage::Fusion, "Max extent",
+    "Largest volume side; a bigger point box is refused (asks for a coarser voxel or less depth)"};
+inline constexpr ParameterKey<double> pose_group_mm{
+    "fusion.pose_group_mm", "mm", 50.0, 1.0, 1000.0, 1.0, Stage::Fusion, "Pose grouping",
+    "Consecutive frames whose camera moved less than this (and 5 deg) are one arm pose"};
+}  // namespace fusion_keys
+
 struct FusionOptions {
-  double voxel_m = 0.008;
-  double truncation_m = 0.03;
-  double min_depth_m = 0.3;  // cloud.min_range_m
-  double max_depth_m = 2.5;
-  int max_weight = 64;
-  int min_weight = 2;
-  double bounds_margin_m = 0.05;
-  double max_extent_m = 12.0;
-  double pose_group_m = 0.05;
+  double voxel_m = mm_to_m(fusion_keys::voxel_mm.default_value);
+  double truncation_m = mm_to_m(fusion_keys::truncation_mm.default_value);
+  double min_depth_m = cloud_keys::min_range_m.default_value;  // the cloud's near limit
+  double max_depth_m = fusion_keys::max_depth_m.default_value;
+  int max_weight = fusion_keys::max_weight.default_value;
+  int min_weight = fusion_keys::min_weight.default_value;
+  double bounds_margin_m = fusion_keys::bounds_margin_m.default_value;
+  double max_extent_m = fusion_keys::max_extent_m.default_value;
+  double pose_group_m = mm_to_m(fusion_keys::pose_group_mm.default_value);
 };
+bool operator==(const FusionOptions& a, const FusionOptions& b);
+inline bool operator!=(const FusionOptions& a, const FusionOptions& b) { return !(a == b); }
 
 FusionOptions fusion_options(const Parameters& p);
+ParameterGroup fusion_parameter_group();  // table rows and rules, in table order
 TsdfOptions tsdf_options(const FusionOptions& o);
 
 // Grows `box` by the world positions of the frame's depth pixels inside the fusion depth range

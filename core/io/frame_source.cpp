@@ -10,6 +10,7 @@
 
 #include "core/io/depth_png.h"
 #include "core/io/organized_pcd.h"
+#include "core/io/png_folder.h"
 #include "core/io/tum_sequence.h"
 #include "core/util/error.h"
 
@@ -99,8 +100,8 @@ std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOpti
   if (!fs::exists(input, ec)) throw InputError(input, ec ? "cannot access: " + ec.message() : "not found");
   if (is_tum_sequence(input)) return std::make_unique<DatasetSource>(read_dataset(input, opt));
   if (fs::is_directory(input, ec)) {
-    if (!fs::exists(fs::path(input) / "dataset.json", ec))
-      throw InputError(input, "folder has no dataset.json (expected a dataset folder)");
+    // A plain folder of depth PNGs is a sequence without poses.
+    if (!fs::exists(fs::path(input) / "dataset.json", ec)) return open_png_folder(input, opt);
     return std::make_unique<DatasetSource>(read_dataset(input, opt));
   }
   const std::string ext = lower(fs::path(input).extension().string());

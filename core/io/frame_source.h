@@ -1,6 +1,7 @@
 #pragma once
 // One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, a
-// dataset folder (or its dataset.json), or a TUM RGB-D sequence (folder with depth.txt).
+// dataset folder (or its dataset.json), a TUM RGB-D sequence (folder with depth.txt), or a plain
+// folder of depth PNGs (core/io/png_folder.h).
 #include <cstddef>
 #include <functional>
 #include <memory>

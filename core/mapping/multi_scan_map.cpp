@@ -87,8 +87,8 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
     std::string reason;
     for (std::size_t i = 0; i < scans.size(); ++i)
       if ((i < groups.size() ? groups[i] : 0) == p.group) {
-        if (++votes[scans[i].map.status] >= votes[p.status]) {
-          p.status = scans[i].map.status;
+        if (++votes[status_name(scans[i].map.status)] >= votes[p.status]) {
+          p.status = status_name(scans[i].map.status);
           reason = scans[i].map.reason;
         }
       }
@@ -103,7 +103,7 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
   out.frames_merged = static_cast<int>(maps.size());
   if (maps.empty()) {
     m.detected = false;
-    m.status = "no_detection";
+    m.status = TunnelStatus::NoDetection;
     m.reason = "no frame found the tunnel; every pose needs a rescan";
     return out;
   }
@@ -134,7 +134,7 @@ MultiScanMap merge_scans(const std::vector<ScanInput>& scans, const std::vector<
   }
   centre = origin + centre / double(maps.size());
   m.detected = true;
-  m.status = "ok";
+  m.status = TunnelStatus::Ok;
   m.reason = "merged " + std::to_string(maps.size()) + " frames";
   m.width_m = median(widths);
   m.height_m = median(heights);

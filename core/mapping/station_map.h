@@ -12,21 +12,11 @@
 #include <vector>
 
 #include "core/mapping/multi_scan_map.h"
+#include "core/mapping/map_options.h"  // StationMapOptions
 #include "core/tunnel/tunnel_map.h"
 #include "core/util/stage_timer.h"
 
 namespace tunnelmap {
-
-struct StationMapOptions {
-  double station_step_m = 0.10;
-  std::optional<double> design_width_m, design_height_m;  // the design cross-section, if known
-  double tolerance_mm = 10.0;      // |deviation| above this is out of tolerance
-  double section_change_mm = 12.0; // stations differing by more than this start a new section
-  int min_section_stations = 3;    // a shorter run is an outlier, not a section
-  double zone_gap_m = 0.010;       // wall positions closer than this are one zone
-  double max_symmetric_step_m = 0.03;
-  int min_support_points = 60;     // fewest wall points a station needs to measure a wall
-};
 
 struct Station {
   double station_m = 0.0;          // centre of the station's bin along the axis

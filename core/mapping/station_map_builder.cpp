@@ -37,20 +37,7 @@ void outward(const Eigen::Vector3d& axis, const Eigen::Vector3d& up, Eigen::Vect
 
 }  // namespace
 
-StationMapOptions station_map_options(const Parameters& p) {
-  StationMapOptions o;
-  o.station_step_m = p.get("map.station_step_m");
-  if (p.get("tunnel.design_width_m") > 0) o.design_width_m = p.get("tunnel.design_width_m");
-  if (p.get("tunnel.design_height_m") > 0) o.design_height_m = p.get("tunnel.design_height_m");
-  o.tolerance_mm = p.get("map.tolerance_mm");
-  o.section_change_mm = p.get("map.section_change_mm");
-  o.min_section_stations =
-      std::max(1, static_cast<int>(std::lround(p.get("map.min_section_m") / o.station_step_m)));
-  o.zone_gap_m = p.get("tunnel.zone_cluster_mm") / 1000.0;
-  o.max_symmetric_step_m = p.get("tunnel.symmetric_step_max_mm") / 1000.0;
-  o.min_support_points = p.get_int("map.min_station_points");
-  return o;
-}
+// station_map_options: core/mapping/map_options.cpp, beside the map.* declarations.
 
 StationMapBuilder::StationMapBuilder(StationMapOptions options, TunnelOptions tunnel)
     : options_(std::move(options)), tunnel_(tunnel) {}
@@ -220,7 +207,7 @@ void StationMapBuilder::own_parts(TunnelMap& m, const Pieces& own, int camera_st
   }
   if (changed) {
     rebuild_wall_geometry(m, tunnel_.forbidden_band_m);
-    if (m.status == "ok") describe_tunnel_map(m);
+    if (m.status == TunnelStatus::Ok) describe_tunnel_map(m);
   }
 }
 
@@ -265,7 +252,7 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
     }
     if (compared >= 3 && 2 * disagree > compared) {
       m.detected = false;
-      m.status = "inconsistent_with_context";
+      m.status = TunnelStatus::InconsistentWithContext;
       char buf[200];
       std::snprintf(buf, sizeof buf,
                     "%s differs from the map at %d of %d stations it sees (by up to %.0f mm, "
@@ -387,7 +374,7 @@ TunnelMap section_map(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis
                       double band) {
   TunnelMap m;
   m.detected = true;
-  m.status = "ok";
+  m.status = TunnelStatus::Ok;
   m.axis_dir = axis;
   m.up = up;
   double pos[4];

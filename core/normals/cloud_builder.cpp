@@ -8,6 +8,12 @@
 namespace tunnelmap {
 
 void build_cloud(const DepthFrame& frame, const CloudOptions& options, OrganizedCloud& cloud) {
+  CloudScratch scratch;
+  build_cloud(frame, options, cloud, scratch);
+}
+
+void build_cloud(const DepthFrame& frame, const CloudOptions& options, OrganizedCloud& cloud,
+                 CloudScratch& scratch) {
   const int w = frame.width, h = frame.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;
   cloud.width = w;
@@ -22,7 +28,8 @@ void build_cloud(const DepthFrame& frame, const CloudOptions& options, Organized
   const float zmin = static_cast<float>(options.min_range_m);
   const float zmax = static_cast<float>(options.max_range_m);
   // Precomputed per-column / per-row ray factors: x = (u - cx) / fx * z.
-  thread_local std::vector<float> kx, ky;  // reused: no allocation per frame
+  std::vector<float>& kx = scratch.kx;
+  std::vector<float>& ky = scratch.ky;
   kx.resize(w), ky.resize(h);
   for (int u = 0; u < w; ++u) kx[u] = static_cast<float>((u - frame.intrinsics.cx) / frame.intrinsics.fx);
   for (int v = 0; v < h; ++v) ky[v] = static_cast<float>((v - frame.intrinsics.cy) / frame.intrinsics.fy);

@@ -11,27 +11,12 @@
 
 #include <Eigen/Geometry>
 
+#include "core/normals/normals_row_avx2.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
 
 namespace {
-
-// Per-thread scratch, reused across frames (no allocation per frame in the steady state).
-// Points and their box means are (x, y, z, support) quadruples, one SSE register per pixel: a
-// box sum of the four channels is then one vector addition per step. The float images are
-// ring buffers of a few rows, filled and consumed in one streaming pass over the frame, so the
-// working set stays in the cache instead of making seven passes over ~5 MB images.
-struct Scratch {
-  std::vector<float> q_ring;     // quadruples of the last rows (x, y, z, 1; 0 where invalid)
-  std::vector<float> mean_ring;  // box means of the last rows, channel planes x, y, z, support (1 or 0)
-  std::vector<float> mean_aos;   // the current row's means as quadruples, before the transpose
-  std::vector<float> no_means;   // a row of zero support, above and below the image
-  std::vector<float> inv_ring;   // inverse depth of the last rows, 0 = no measurement
-  std::vector<float> acc;        // vertical box sums of the current row (4 per pixel)
-  std::vector<std::uint8_t> edges, row_dilated, near_edge;  // full images, one byte per pixel
-  std::vector<int> edge_count;
-};
 
 inline __m128 select(__m128 mask, __m128 a, __m128 b) {  // mask ? a : b
   return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
@@ -60,6 +45,11 @@ inline void tangent4(const Means4& a, const Means4& c, const Means4& b, __m128& 
 }  // namespace
 
 void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
+  NormalScratch scratch;
+  estimate_normals(options, cloud, scratch);
+}
+
+void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud, NormalScratch& s) {
   StageTimer timer(cloud.timings_ms, "normals");
   const int w = cloud.width, h = cloud.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;
@@ -92,7 +82,6 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
   const int mpad = (r + 3) & ~3;
   const std::size_t mplane = static_cast<std::size_t>(w4 + 2 * mpad), mrow = 4 * mplane;
 
-  thread_local Scratch s;
   s.q_ring.resize(q_rows * row4);
   s.mean_ring.assign(mean_rows * mrow, 0.0f);  // the pads stay zero: only [0, w) is written
   s.mean_aos.assign(4 * static_cast<std::size_t>(w4), 0.0f);
@@ -110,6 +99,7 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
 
   // Normals of row v, four pixels at a time: the cross product of the column and row tangents,
   // unit length, facing the camera; NaN without a point, near an edge or without tangents.
+  const bool avx2 = normals_avx2_available();
   const auto normals_row = [&](int v) {
     const float* mid[4];
     const float* top[4];
@@ -124,7 +114,13 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
     float* o = out + 3 * static_cast<std::size_t>(v) * w;
     const __m128 nan4 = _mm_set1_ps(std::numeric_limits<float>::quiet_NaN());
     const __m128 sign = _mm_set1_ps(-0.0f), zero = _mm_setzero_ps();
-    for (int u = 0; u < w; u += 4) {
+    // Eight pixels at a time where the CPU has AVX2 (the same normals), the rest four at a time.
+    const int u_first = avx2 ? normals_row_avx2(MeanRows{{mid[0], mid[1], mid[2], mid[3]},
+                                                         {top[0], top[1], top[2], top[3]},
+                                                         {bottom[0], bottom[1], bottom[2], bottom[3]}},
+                                                r, near_row, p, o, w)
+                             : 0;
+    for (int u = u_first; u < w; u += 4) {
       const int lanes = std::min(4, w - u);
       __m128 px, py, pz;
       std::uint32_t near4 = 0x01010101u;  // missing lanes count as near an edge
@@ -262,9 +258,9 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
         else if (sub)
           for (std::size_t x = 0; x < row4; ++x) acc[x] -= sub[x];
       }
+      // The horizontal box sums (a serial chain of additions, one pixel after the other) are
+      // stored as they are; the means are taken after the transpose, four pixels per step.
       float* m = s.mean_aos.data();
-      const __m128 min_count4 = _mm_set1_ps(min_count), one4 = _mm_set1_ps(1.0f);
-      const __m128 lane3 = _mm_castsi128_ps(_mm_set_epi32(-1, 0, 0, 0));
       __m128 sum = _mm_setzero_ps();
       for (int u = 0; u < w; ++u) {
         if ((u & 63) == 0) {
@@ -275,25 +271,26 @@ void estimate_normals(const NormalOptions& options, OrganizedCloud& cloud) {
           const __m128 leave = u - r0 - 1 >= 0 ? _mm_loadu_ps(acc + 4 * (u - r0 - 1)) : _mm_setzero_ps();
           sum = _mm_add_ps(sum, _mm_sub_ps(in, leave));
         }
-        // Mean = sum / support where the support reaches the minimum; lane 3 becomes 1 or 0.
-        const __m128 cnt = _mm_shuffle_ps(sum, sum, _MM_SHUFFLE(3, 3, 3, 3));
-        const __m128 ok = _mm_cmpge_ps(cnt, min_count4);
-        __m128 rcp = _mm_rcp_ps(cnt);  // 1/count: estimate + one Newton step, no divide latency
-        rcp = _mm_mul_ps(rcp, _mm_sub_ps(_mm_set1_ps(2.0f), _mm_mul_ps(cnt, rcp)));
-        const __m128 mean = _mm_and_ps(ok, _mm_mul_ps(sum, rcp));
-        _mm_storeu_ps(m + 4 * u, select(lane3, _mm_and_ps(ok, one4), mean));
+        _mm_storeu_ps(m + 4 * u, sum);
       }
-      // Quadruples to channel planes, four pixels at a time (the tail of mean_aos is zero).
+      // Quadruples to channel planes, four pixels at a time (the tail of mean_aos is zero),
+      // then mean = sum / support where the support reaches the minimum; support becomes 1 or 0.
       float* mx = mean_plane(j, 0);
       float* my = mean_plane(j, 1);
       float* mz = mean_plane(j, 2);
       float* ms = mean_plane(j, 3);
+      const __m128 min_count4 = _mm_set1_ps(min_count), one4 = _mm_set1_ps(1.0f), two4 = _mm_set1_ps(2.0f);
       for (int u = 0; u < w4; u += 4) {
         __m128 q0 = _mm_loadu_ps(m + 4 * u), q1 = _mm_loadu_ps(m + 4 * u + 4);
         __m128 q2 = _mm_loadu_ps(m + 4 * u + 8), q3 = _mm_loadu_ps(m + 4 * u + 12);
         _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
-        _mm_storeu_ps(mx + u, q0), _mm_storeu_ps(my + u, q1);
-        _mm_storeu_ps(mz + u, q2), _mm_storeu_ps(ms + u, q3);
+        const __m128 ok = _mm_cmpge_ps(q3, min_count4);
+        __m128 rcp = _mm_rcp_ps(q3);  // 1/count: estimate + one Newton step, no divide latency
+        rcp = _mm_mul_ps(rcp, _mm_sub_ps(two4, _mm_mul_ps(q3, rcp)));
+        _mm_storeu_ps(mx + u, _mm_and_ps(ok, _mm_mul_ps(q0, rcp)));
+        _mm_storeu_ps(my + u, _mm_and_ps(ok, _mm_mul_ps(q1, rcp)));
+        _mm_storeu_ps(mz + u, _mm_and_ps(ok, _mm_mul_ps(q2, rcp)));
+        _mm_storeu_ps(ms + u, _mm_and_ps(ok, one4));
       }
     }
     if (const int ne = t - 1 - R; ne >= 0 && ne < h) {

@@ -43,7 +43,43 @@ double Parameters::get(const std::string& key) const {
   return it->second;
 }
 
+// One line naming the rule `values` break, or empty.
+static std::string broken_rule(const ParameterRule& r, const std::map<std::string, double>& values) {
+  const double a = values.at(r.a);
+  switch (r.kind) {
+    case ParameterRule::Kind::Less: {
+      const double b = values.at(r.b);
+      if (a < b) return "";
+      return "parameter '" + r.a + "' = " + format_number(a) + " must be less than '" + r.b + "' = " +
+             format_number(b);
+    }
+    case ParameterRule::Kind::Odd:
+      if (static_cast<long long>(a) % 2 != 0) return "";
+      return "parameter '" + r.a + "' must be odd, got " + format_number(a);
+  }
+  return "";
+}
+
+void Parameters::check_rules() const {
+  for (const ParameterRule& r : parameter_rules()) {
+    const std::string broken = broken_rule(r, values_);
+    if (!broken.empty()) throw ParameterError(broken);
+  }
+}
+
 void Parameters::set(const std::string& key, double value) {
+  Parameters updated = *this;
+  updated.set_unchecked_rules(key, value);
+  // Only the rules of this key: the others held before and did not change.
+  for (const ParameterRule& r : parameter_rules()) {
+    if (r.a != key && r.b != key) continue;
+    const std::string broken = broken_rule(r, updated.values_);
+    if (!broken.empty()) throw ParameterError(broken);
+  }
+  values_.swap(updated.values_);
+}
+
+void Parameters::set_unchecked_rules(const std::string& key, double value) {
   const ParameterSpec& spec = spec_or_throw(key);
   if (!std::isfinite(value))
     throw ParameterError("parameter '" + key + "' must be a finite number");
@@ -53,12 +89,11 @@ void Parameters::set(const std::string& key, double value) {
                          (spec.unit.empty() ? "" : " " + spec.unit));
   if (spec.integer && value != std::floor(value))
     throw ParameterError("parameter '" + key + "' must be a whole number, got " + format_number(value));
-  if (key == "grow.neighbourhood_n" && static_cast<int>(value) % 2 == 0)
-    throw ParameterError("parameter 'grow.neighbourhood_n' must be odd, got " + format_number(value));
   values_[key] = value;
 }
 
-void Parameters::set_from_string(const std::string& assignment) {
+namespace {
+std::pair<std::string, double> parse_assignment(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw ParameterError("--set expects KEY=VALUE, got '" + assignment + "'");
@@ -74,7 +109,23 @@ void Parameters::set_from_string(const std::string& assignment) {
   }
   if (used == 0 || used != text.size())
     throw ParameterError("parameter '" + key + "' expects a number, got '" + text + "'");
+  return {key, value};
+}
+}  // namespace
+
+void Parameters::set_from_string(const std::string& assignment) {
+  const auto [key, value] = parse_assignment(assignment);
   set(key, value);
+}
+
+void Parameters::set_from_strings(const std::vector<std::string>& assignments) {
+  Parameters updated = *this;  // all or nothing
+  for (const std::string& a : assignments) {
+    const auto [key, value] = parse_assignment(a);
+    updated.set_unchecked_rules(key, value);
+  }
+  updated.check_rules();
+  *this = updated;
 }
 
 void Parameters::reset(const std::string& key) { values_[key] = spec_or_throw(key).default_value; }
@@ -103,10 +154,16 @@ void Parameters::apply_json(const nlohmann::json& j, const std::string& source) 
     if (!it.value().is_number())
       throw InputError(source, "parameter '" + it.key() + "' must be a number");
     try {
-      updated.set(it.key(), it.value().get<double>());
+      updated.set_unchecked_rules(it.key(), it.value().get<double>());
     } catch (const ParameterError& e) {
       throw InputError(source, e.what());
     }
+  }
+  // Rules after the whole preset: a preset may raise a minimum above the old maximum.
+  try {
+    updated.check_rules();
+  } catch (const ParameterError& e) {
+    throw InputError(source, e.what());
   }
   *this = updated;
 }

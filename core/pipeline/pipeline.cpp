@@ -8,55 +8,9 @@
 
 namespace tunnelmap {
 
-CloudOptions cloud_options(const Parameters& p) {
-  CloudOptions o;
-  o.min_range_m = p.get("cloud.min_range_m");
-  o.max_range_m = p.get("cloud.max_range_m");
-  return o;
-}
-
-NormalOptions normal_options(const Parameters& p) {
-  NormalOptions o;
-  o.smoothing_px = p.get_int("normals.smoothing_px");
-  o.max_depth_change = p.get("normals.max_depth_change");
-  return o;
-}
-
-GrowOptions grow_options(const Parameters& p) {
-  GrowOptions o;
-  o.angle_deg = p.get("grow.angle_deg");
-  o.distance_m = p.get("grow.distance_mm") / 1000.0;
-  o.candidate_distance_m = p.get("grow.candidate_distance_mm") / 1000.0;
-  o.neighbourhood_n = p.get_int("grow.neighbourhood_n");
-  o.min_points = p.get_int("grow.min_points");
-  o.min_area_m2 = p.get("grow.min_area_m2");
-  o.refit_normal = p.get_int("grow.refit_normal") != 0;
-  o.grid_step = p.get_int("grow.grid_step");
-  o.edge_on_pass = p.get_int("grow.edge_on_pass") != 0;
-  return o;
-}
-
-TunnelOptions tunnel_options(const Parameters& p) {
-  TunnelOptions o;
-  o.class_angle_deg = p.get("tunnel.class_angle_deg");
-  o.outlier_bin_deg = p.get("tunnel.outlier_bin_deg");
-  o.outlier_max_deg = p.get("tunnel.outlier_max_deg");
-  o.zone_cluster_m = p.get("tunnel.zone_cluster_mm") / 1000.0;
-  o.min_cluster_points = p.get_int("tunnel.min_cluster_points");
-  o.zone_support_ref_m = p.get("tunnel.zone_support_ref_m");
-  o.zone_gap_ref_m = p.get("tunnel.zone_gap_ref_m");
-  o.context_tolerance_m = p.get("tunnel.context_tolerance_mm") / 1000.0;
-  o.max_pair_angle_deg = p.get("tunnel.max_pair_angle_deg");
-  o.width_min_m = p.get("tunnel.width_min_m");
-  o.width_max_m = p.get("tunnel.width_max_m");
-  o.height_min_m = p.get("tunnel.height_min_m");
-  o.height_max_m = p.get("tunnel.height_max_m");
-  o.forbidden_band_m = p.get("zones.forbidden_band_m");
-  o.max_symmetric_step_m = p.get("tunnel.symmetric_step_max_mm") / 1000.0;
-  o.design_width_m = p.get("tunnel.design_width_m");
-  o.design_height_m = p.get("tunnel.design_height_m");
-  return o;
-}
+// cloud_options, normal_options, grow_options, tunnel_options: beside their declarations
+// (core/normals/cloud_options.cpp, normal_options.cpp, core/planes/grow_options.cpp,
+// core/tunnel/tunnel_options.cpp).
 
 Eigen::Vector3d resolve_up(const DepthFrame& frame, const Eigen::Vector3d& world_up,
                            const std::optional<Eigen::Vector3d>& camera_up) {
@@ -87,22 +41,23 @@ void Pipeline::derive_options() {
   tunnel_ = tunnel_options(params_);
 }
 
-void Pipeline::run(const DepthFrame& frame, FrameResult& result, TunnelContext* context,
-                   Stage from) const {
+void Pipeline::run(const DepthFrame& frame, FrameResult& result, FrameScratch& scratch,
+                   TunnelContext* context, Stage from) const {
   check_frame_size(frame, normals_);
   const auto start = std::chrono::steady_clock::now();
   if (from <= Stage::Cloud) {
     reset_timings(result.cloud.timings_ms);
     StageTimer t(result.cloud.timings_ms, "cloud");
-    build_cloud(frame, cloud_, result.cloud);
+    build_cloud(frame, cloud_, result.cloud, scratch.cloud);
   }
   if (from <= Stage::Normals) {
     result.cloud.timings_ms["normals"] = 0.0;
-    estimate_normals(normals_, result.cloud);
+    estimate_normals(normals_, result.cloud, scratch.normals);
   }
-  if (from <= Stage::Planes) extract_planes(result.cloud, grow_, result.planes);
+  if (from <= Stage::Planes) extract_planes(result.cloud, grow_, result.planes, scratch.planes);
   // In place: the map's vectors and strings keep their buffers (no allocation per frame).
-  detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_), tunnel_, context, result.map);
+  detect_tunnel(result.planes, resolve_up(frame, world_up_, camera_up_), tunnel_, context, result.map,
+                scratch.tunnel);
   if (context && result.map.detected) context->accept(result.map);
 
   StageTimings& t = result.timings_ms;  // the same five keys every run: no allocation

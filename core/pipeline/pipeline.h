@@ -7,6 +7,7 @@
 #include "core/frame/depth_frame.h"
 #include "core/frame/organized_cloud.h"
 #include "core/params/parameters.h"
+#include "core/pipeline/frame_scratch.h"
 #include "core/planes/plane_segment.h"
 #include "core/normals/cloud_builder.h"
 #include "core/normals/integral_normals.h"
@@ -37,6 +38,9 @@ struct FrameResult {
   PlaneSegments planes;
   TunnelMap map;
   StageTimings timings_ms;  // "cloud", "normals", "planes", "tunnel", "total"
+  // The stages' buffers for the next run into this result (not part of its value: copies and
+  // moves leave it behind). A result reused frame after frame thus allocates nothing.
+  FrameScratch scratch;
 };
 
 class Pipeline {
@@ -50,12 +54,21 @@ class Pipeline {
 
   // Runs everything from stage `from` on. Stages before `from` reuse `result`'s contents,
   // which must come from an earlier run on the same frame. A frame smaller than the normal
-  // window is an InputError (check_frame_size), thrown before `result` is touched.
+  // window is an InputError (check_frame_size), thrown before `result` is touched. The stages
+  // work in result.scratch. Thread-safe (const): concurrent runs need distinct results.
   void run(const DepthFrame& frame, FrameResult& result, TunnelContext* context = nullptr,
-           Stage from = Stage::Cloud) const;
+           Stage from = Stage::Cloud) const {
+    run(frame, result, result.scratch, context, from);
+  }
+  // The same with the stages working in `scratch` (e.g. one per worker thread, whatever result
+  // slot the frame goes to).
+  void run(const DepthFrame& frame, FrameResult& result, FrameScratch& scratch,
+           TunnelContext* context = nullptr, Stage from = Stage::Cloud) const;
+  // A one-off frame: the scratch is dropped afterwards, so the result holds no buffers.
   FrameResult run(const DepthFrame& frame, TunnelContext* context = nullptr) const {
     FrameResult r;
-    run(frame, r, context);
+    FrameScratch scratch;
+    run(frame, r, scratch, context);
     return r;
   }
 

@@ -62,7 +62,11 @@ int resolve_thread_count(int requested) {
 
 SequenceRunner::SequenceRunner(const Pipeline& pipeline, TunnelContext* context,
                                SequenceOptions options)
-    : work_([pipeline](const DepthFrame& f, FrameResult& r) mutable { pipeline.run(f, r, nullptr); }),
+    // The scratch travels with the work: each worker's copy has its own (FrameScratch copies
+    // start empty), so the ring's result slots hold no buffers of their own.
+    : work_([pipeline, scratch = FrameScratch()](const DepthFrame& f, FrameResult& r) mutable {
+        pipeline.run(f, r, scratch, nullptr);
+      }),
       options_(options) {
   if (context)
     ordered_ = [opt = tunnel_options(pipeline.params()), context](SequenceFrame& s) {

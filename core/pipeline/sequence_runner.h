@@ -49,7 +49,7 @@ struct SequenceStats {
 class SequenceRunner {
  public:
   // Context-free work on one frame, run in a worker; every worker gets its own copy (so a
-  // captured Pipeline and its scratch buffers are never shared between threads).
+  // captured Pipeline and a captured FrameScratch are never shared between threads).
   using Work = std::function<void(const DepthFrame&, FrameResult&)>;
   // Order-dependent step, run in the delivering thread in frame order, for frames without error.
   // An exception thrown here becomes that frame's error.
@@ -59,7 +59,8 @@ class SequenceRunner {
   using Deliver = std::function<bool(SequenceFrame&)>;
 
   // PG&C: cloud, normals, planes and the per-frame tunnel fit in the workers, each with its own
-  // copy of `pipeline`; the context check (apply_tunnel_context) and update in frame order.
+  // copy of `pipeline` and its own FrameScratch; the context check (apply_tunnel_context) and
+  // update in frame order.
   // `context` may be null (frames independent); it must outlive run().
   SequenceRunner(const Pipeline& pipeline, TunnelContext* context, SequenceOptions options = {});
   SequenceRunner(Work work, Ordered ordered, SequenceOptions options = {});

@@ -33,12 +33,7 @@ struct BoxMask {
   void mark_traced(int x, int y) const { traced[y * words + (x >> 6)] |= 1ull << (x & 63); }
 };
 
-// A traced border: the first `count` points of `points`, whose size only grows (so refilling
-// it neither allocates nor re-initialises in the steady state).
-struct Chain {
-  std::vector<PixelPoint> points;
-  int count = 0;
-};
+using Chain = BoundaryTraceScratch::Chain;
 
 // Follows the border through (x, y) (foreground, background on its left), marking every
 // pixel it passes. Moore-neighbour tracing with the neighbour order and stopping rule of
@@ -49,7 +44,7 @@ struct Chain {
 // returns twice the signed shoelace area.
 std::int64_t follow_border(const BoxMask& box, int x, int y, const int (&offset)[16], PixelPoint origin,
                            Chain& out) {
-  // Plain locals in the loop (no vector bookkeeping through thread-local storage).
+  // Plain locals in the loop (no vector bookkeeping through the Chain reference).
   PixelPoint* points = out.points.data();
   int count = 0, room = static_cast<int>(out.points.size());
   const auto emit = [&](int px, int py) {
@@ -108,10 +103,12 @@ std::int64_t follow_border(const BoxMask& box, int x, int y, const int (&offset)
   return twice_area;
 }
 
-// Fills `box` from the labels; per-thread storage that only grows.
-BoxMask fill_box(const std::int32_t* labels, int width, std::int32_t label, int u0, int v0, int bw, int bh) {
-  thread_local std::vector<std::uint8_t> bytes;
-  thread_local std::vector<std::uint64_t> foreground, traced;
+// Fills `box` from the labels, in the scratch's storage that only grows.
+BoxMask fill_box(const std::int32_t* labels, int width, std::int32_t label, int u0, int v0, int bw, int bh,
+                 BoundaryTraceScratch& scratch) {
+  std::vector<std::uint8_t>& bytes = scratch.bytes;
+  std::vector<std::uint64_t>& foreground = scratch.foreground;
+  std::vector<std::uint64_t>& traced = scratch.traced;
   BoxMask box{};
   box.stride = bw + 2;
   box.words = (box.stride + 63) / 64;
@@ -163,14 +160,22 @@ std::int64_t twice_polygon_area(const std::vector<PixelPoint>& polygon) {
 
 std::int64_t trace_largest_outer_boundary(const std::int32_t* labels, int width, std::int32_t label, int u0,
                                           int v0, int u1, int v1, std::vector<PixelPoint>& contour) {
+  BoundaryTraceScratch scratch;
+  return trace_largest_outer_boundary(labels, width, label, u0, v0, u1, v1, contour, scratch);
+}
+
+std::int64_t trace_largest_outer_boundary(const std::int32_t* labels, int width, std::int32_t label, int u0,
+                                          int v0, int u1, int v1, std::vector<PixelPoint>& contour,
+                                          BoundaryTraceScratch& scratch) {
   contour.clear();
   const int bw = u1 - u0 + 1, bh = v1 - v0 + 1;
   if (bw <= 0 || bh <= 0) return 0;
-  const BoxMask box = fill_box(labels, width, label, u0, v0, bw, bh);
+  const BoxMask box = fill_box(labels, width, label, u0, v0, bw, bh, scratch);
   int offset[16];
   for (int s = 0; s < 16; ++s) offset[s] = kDx[s & 7] + kDy[s & 7] * box.stride;
   const PixelPoint origin{u0 - 1, v0 - 1};  // mask to image coordinates
-  thread_local Chain trace, best;
+  Chain& trace = scratch.trace;
+  Chain& best = scratch.best;
   best.count = 0;
   std::int64_t best_area = -1;
 

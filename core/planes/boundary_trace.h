@@ -22,9 +22,27 @@ std::int64_t twice_polygon_area(const std::vector<PixelPoint>& polygon);
 // largest cv::contourArea: the same start pixel, direction and points (ties go to the
 // component found last in a row-major scan, as OpenCV lists its contours bottom-up).
 // A single pixel gives one point, a one-pixel line goes out and back. Empty if no pixel in the
-// box carries `label`. Per-thread buffers only grow: no allocation in the steady state.
+// box carries `label`. The buffers in `scratch` only grow: no allocation in the steady state.
 // Returns twice the contour's area.
+struct BoundaryTraceScratch;
+std::int64_t trace_largest_outer_boundary(const std::int32_t* labels, int width, std::int32_t label, int u0,
+                                          int v0, int u1, int v1, std::vector<PixelPoint>& contour,
+                                          BoundaryTraceScratch& scratch);
+// The same with scratch of its own: allocates it on every call (tests, one-off traces).
 std::int64_t trace_largest_outer_boundary(const std::int32_t* labels, int width, std::int32_t label, int u0,
                                           int v0, int u1, int v1, std::vector<PixelPoint>& contour);
+
+// The tracer's buffers, kept by the caller (one per concurrent caller, see ContourScratch).
+struct BoundaryTraceScratch {
+  // A traced border: the first `count` points of `points`, whose size only grows (so refilling
+  // it neither allocates nor re-initialises in the steady state).
+  struct Chain {
+    std::vector<PixelPoint> points;
+    int count = 0;
+  };
+  std::vector<std::uint8_t> bytes;                // the box's mask, a byte per pixel
+  std::vector<std::uint64_t> foreground, traced;  // the box's bit rows
+  Chain trace, best;                              // the border being followed, the largest so far
+};
 
 }  // namespace tunnelmap

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/planes/plane_growing.h"
 #include "core/planes/plane_model.h"
@@ -12,14 +13,14 @@
 namespace tunnelmap {
 
 int grow_edge_on_surfaces(const OrganizedCloud& full, const GrowOptions& options, PlaneSegments& planes,
-                          const std::vector<std::uint8_t>& pixel_states) {
+                          const std::vector<std::uint8_t>& pixel_states, RegionGrower& grower,
+                          ContourBufferPool& pool) {
   const int w = full.width, h = full.height;
   const std::size_t n = static_cast<std::size_t>(w) * h;
   if (n == 0 || planes.labels.size() != n || pixel_states.size() != n) return 0;
   // A seed is a 2x2 block of seed pixels: none, nothing to do (most frames of a flat scene).
   if (std::find(pixel_states.begin(), pixel_states.end(), kEdgeOnSeed) == pixel_states.end()) return 0;
 
-  thread_local RegionGrower grower;
   grower.reset_unlabelled(full, options, pixel_states);
   const double fxfy = full.intrinsics.fx * full.intrinsics.fy;
   std::size_t kept = planes.planes.size();
@@ -27,8 +28,12 @@ int grow_edge_on_surfaces(const OrganizedCloud& full, const GrowOptions& options
   int added = 0;
   for (int v = 0; v + 1 < h; ++v) {
     const std::uint8_t* row = pixel_states.data() + static_cast<std::size_t>(v) * w;
-    for (int u = 0; u + 1 < w; ++u) {
-      if (row[u] != kEdgeOnSeed || !grower.seedable(u, v)) continue;
+    // Seed pixels are sparse: jump from one to the next (memchr) instead of testing each pixel.
+    for (const std::uint8_t* at = row; (at = static_cast<const std::uint8_t*>(
+                                            std::memchr(at, kEdgeOnSeed, static_cast<std::size_t>(row + w - 1 - at))));
+         ++at) {
+      const int u = static_cast<int>(at - row);
+      if (!grower.seedable(u, v)) continue;
       PlaneModel model;
       if (!grower.seed(u, v, model)) continue;
       grower.grow(u, v, next_id, model);
@@ -36,7 +41,7 @@ int grow_edge_on_surfaces(const OrganizedCloud& full, const GrowOptions& options
         grower.release();
         continue;
       }
-      if (kept == planes.planes.size()) add_plane_slot(planes.planes);
+      if (kept == planes.planes.size()) add_plane_slot(planes.planes, pool);
       PlaneSegment& plane = planes.planes[kept];
       fill_segment_statistics(plane, model, options, fxfy);
       if (plane.area_m2 < options.min_area_m2) {
@@ -52,7 +57,7 @@ int grow_edge_on_surfaces(const OrganizedCloud& full, const GrowOptions& options
       ++kept, ++next_id, ++added;
     }
   }
-  shrink_plane_slots(planes.planes, kept);
+  shrink_plane_slots(planes.planes, kept, pool);
   return added;
 }
 

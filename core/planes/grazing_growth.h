@@ -16,6 +16,8 @@
 namespace tunnelmap {
 
 struct GrowOptions;
+class RegionGrower;
+struct ContourBufferPool;
 
 // True where the growing grid of `step` cannot connect a surface through (p, n): its grid
 // neighbours in the steepest direction lie beyond `candidate_distance_m`.
@@ -35,7 +37,9 @@ constexpr std::uint8_t kEdgeOnTaken = 0, kEdgeOnJoinable = 1, kEdgeOnSeed = 2;
 // labels, marked edge_on; contours are left to the caller. The regions are not merged into
 // the grid's planes: merging moved zone offsets (field height sigma 0.15 -> 1.2 mm), and the
 // tunnel stage measures no zone from edge-on planes. Returns the number of planes added.
+// `grower` and `pool` are the caller's reused buffers (PlaneScratch): no allocation per frame.
 int grow_edge_on_surfaces(const OrganizedCloud& full, const GrowOptions& options, PlaneSegments& planes,
-                          const std::vector<std::uint8_t>& pixel_states);
+                          const std::vector<std::uint8_t>& pixel_states, RegionGrower& grower,
+                          ContourBufferPool& pool);
 
 }  // namespace tunnelmap

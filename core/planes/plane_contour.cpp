@@ -10,6 +10,12 @@ namespace tunnelmap {
 
 void compute_contour(const std::vector<std::int32_t>& labels, int width, const Intrinsics& K,
                      PlaneSegment& plane, double tolerance_px) {
+  ContourScratch scratch;
+  compute_contour(labels, width, K, plane, scratch, tolerance_px);
+}
+
+void compute_contour(const std::vector<std::int32_t>& labels, int width, const Intrinsics& K,
+                     PlaneSegment& plane, ContourScratch& scratch, double tolerance_px) {
   plane.contour.clear();  // keeps its capacity: the caller reuses the plane slot frame after frame
   if (width <= 0) return;
   // The label image's own bounds clip the box (defensive: the grower's boxes lie inside it).
@@ -17,10 +23,11 @@ void compute_contour(const std::vector<std::int32_t>& labels, int width, const I
   const int u0 = std::max(plane.bbox_u0, 0), v0 = std::max(plane.bbox_v0, 0);
   const int u1 = std::min(plane.bbox_u1, width - 1), v1 = std::min(plane.bbox_v1, height - 1);
   if (u0 > u1 || v0 > v1) return;
-  // Per-thread buffers that only grow: no allocation per plane in the steady state.
-  thread_local std::vector<PixelPoint> outline, polygon;
-  trace_largest_outer_boundary(labels.data(), width, plane.id, u0, v0, u1, v1, outline);
-  simplify_closed_polygon(outline, tolerance_px, polygon);
+  // The scratch's buffers only grow: no allocation per plane in the steady state.
+  std::vector<PixelPoint>& outline = scratch.outline;
+  std::vector<PixelPoint>& polygon = scratch.polygon;
+  trace_largest_outer_boundary(labels.data(), width, plane.id, u0, v0, u1, v1, outline, scratch.trace);
+  simplify_closed_polygon(outline, tolerance_px, polygon, scratch.simplify);
   plane.contour.reserve(polygon.size());  // at most one allocation, only if the slot is too small
   for (const PixelPoint& pt : polygon) {
     const Eigen::Vector3d ray = K.ray(pt.x, pt.y);

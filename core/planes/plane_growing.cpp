@@ -7,6 +7,7 @@
 #include "core/planes/plane_contour.h"
 #include "core/planes/plane_model.h"
 #include "core/planes/plane_refinement.h"
+#include "core/planes/plane_scratch.h"
 #include "core/planes/plane_slots.h"
 #include "core/planes/region_grower.h"
 #include "core/planes/segment_statistics.h"
@@ -16,7 +17,8 @@ namespace tunnelmap {
 namespace {
 
 // PG&C growing over every pixel of `cloud`: planes, labels and bounding boxes, no contours.
-void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out) {
+void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out,
+                 RegionGrower& grower, ContourBufferPool& pool) {
   out.width = cloud.width;
   out.height = cloud.height;
   std::size_t kept = 0;  // out.planes' slots are reused frame after frame (no reallocation)
@@ -26,7 +28,6 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
     out.labels.assign(n, 0);
     return;
   }
-  thread_local RegionGrower grower;
   grower.reset(cloud, options);
   const double fxfy = cloud.intrinsics.fx * cloud.intrinsics.fy;
   std::int32_t next_id = 1;
@@ -40,7 +41,7 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
         grower.release();
         continue;
       }
-      if (kept == out.planes.size()) add_plane_slot(out.planes);
+      if (kept == out.planes.size()) add_plane_slot(out.planes, pool);
       PlaneSegment& plane = out.planes[kept];
       plane.id = next_id;
       fill_segment_statistics(plane, model, options, fxfy);
@@ -54,47 +55,50 @@ void grow_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneS
       ++next_id;
     }
   }
-  shrink_plane_slots(out.planes, kept);
+  shrink_plane_slots(out.planes, kept, pool);
   grower.export_labels(out.labels);
 }
 
 }  // namespace
 
-void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out) {
+void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out,
+                    PlaneScratch& scratch) {
   reset_timings(out.timings_ms);
   StageTimer timer(out.timings_ms, "planes");
   const int step = std::max(1, options.grid_step);
   if (step == 1) {
     {
       StageTimer grow_timer(out.timings_ms, "grow");
-      grow_planes(cloud, options, out);
+      grow_planes(cloud, options, out, scratch.grower, scratch.contour_pool);
     }
     if (options.compute_contours) {
       StageTimer contour_timer(out.timings_ms, "contours");
-      for (PlaneSegment& plane : out.planes) compute_contour(out.labels, cloud.width, cloud.intrinsics, plane);
+      for (PlaneSegment& plane : out.planes)
+        compute_contour(out.labels, cloud.width, cloud.intrinsics, plane, scratch.contour);
     }
     return;
   }
-  thread_local OrganizedCloud coarse;
-  thread_local std::vector<std::int32_t> coarse_labels;
-  thread_local std::vector<std::uint8_t> edge_on_states;
+  OrganizedCloud& coarse = scratch.coarse;
+  std::vector<std::int32_t>& coarse_labels = scratch.coarse_labels;
+  std::vector<std::uint8_t>& edge_on_states = scratch.edge_on_states;
   {
     StageTimer grow_timer(out.timings_ms, "grow");
     subsample_cloud(cloud, step, coarse);
     GrowOptions coarse_options = options;
     // Each sample stands for step^2 pixels; the full-resolution minimum is enforced after refinement.
     coarse_options.min_points = std::max(4, options.min_points / (step * step));
-    grow_planes(coarse, coarse_options, out);
+    grow_planes(coarse, coarse_options, out, scratch.grower, scratch.contour_pool);
   }
   {
     StageTimer refine_timer(out.timings_ms, "refine");
     refine_to_full_resolution(cloud, step, options, out, coarse_labels,
-                              options.edge_on_pass ? &edge_on_states : nullptr);
+                              options.edge_on_pass ? &edge_on_states : nullptr, scratch.refinement,
+                              scratch.contour_pool);
   }
   const std::size_t grid_planes = out.planes.size();
   if (options.edge_on_pass) {
     StageTimer edge_timer(out.timings_ms, "edge_on");
-    grow_edge_on_surfaces(cloud, options, out, edge_on_states);
+    grow_edge_on_surfaces(cloud, options, out, edge_on_states, scratch.edge_on_grower, scratch.contour_pool);
   }
   if (options.compute_contours) {
     // The outline at the growing grid's resolution (step times fewer pixels to trace); the
@@ -103,7 +107,7 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
     for (std::size_t i = 0; i < out.planes.size(); ++i) {
       PlaneSegment& plane = out.planes[i];
       if (i >= grid_planes) {  // found by the edge-on pass: it has no grid samples
-        compute_contour(out.labels, cloud.width, cloud.intrinsics, plane);
+        compute_contour(out.labels, cloud.width, cloud.intrinsics, plane, scratch.contour);
         continue;
       }
       // Trace with the bounding box in grid coordinates, then restore the full-resolution box.
@@ -111,10 +115,15 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
       plane.bbox_u0 = u0 / step, plane.bbox_v0 = v0 / step;
       plane.bbox_u1 = std::min(coarse.width - 1, (u1 + step - 1) / step);
       plane.bbox_v1 = std::min(coarse.height - 1, (v1 + step - 1) / step);
-      compute_contour(coarse_labels, coarse.width, coarse.intrinsics, plane);
+      compute_contour(coarse_labels, coarse.width, coarse.intrinsics, plane, scratch.contour);
       plane.bbox_u0 = u0, plane.bbox_v0 = v0, plane.bbox_u1 = u1, plane.bbox_v1 = v1;
     }
   }
+}
+
+void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out) {
+  PlaneScratch scratch;
+  extract_planes(cloud, options, out, scratch);
 }
 
 PlaneSegments extract_planes(const OrganizedCloud& cloud, const GrowOptions& options) {

@@ -28,31 +28,25 @@ void subsample_cloud(const OrganizedCloud& full, int step, OrganizedCloud& coars
     }
 }
 
-namespace {
-
-// The final eq. 4 model of one plane in the form of the growing tests.
-struct PlaneTest {
-  float nx = 0, ny = 0, nz = 0, d = 0;  // unit mean normal n*, d = n*.p*
-  // Point-to-plane distance if the pixel passes both eq. 2 tests, else a negative number.
-  float distance_if_passes(const float* p, const float* n, float eps, float cos_angle) const {
-    const float dist = std::abs(nx * p[0] + ny * p[1] + nz * p[2] - d);
-    return dist <= eps && nx * n[0] + ny * n[1] + nz * n[2] >= cos_angle ? dist : -1.0f;
-  }
-};
-
-}  // namespace
+using PlaneTest = RefinementScratch::PlaneTest;
 
 void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowOptions& options,
                                PlaneSegments& planes, std::vector<std::int32_t>& coarse,
-                               std::vector<std::uint8_t>* edge_on) {
+                               std::vector<std::uint8_t>* edge_on, RefinementScratch& scratch,
+                               ContourBufferPool& pool) {
   const int w = full.width, h = full.height;
   const int cw = planes.width, ch = planes.height;
   const float eps = static_cast<float>(options.distance_m);
   const float cos_angle = static_cast<float>(std::cos(options.angle_deg * M_PI / 180.0));
 
-  thread_local std::vector<PlaneTest> tests;
-  thread_local std::vector<PlaneModel> models;  // the full-resolution members' eq. 4 sums
-  thread_local std::vector<int> u0, v0, u1, v1, col0, col1;
+  std::vector<PlaneTest>& tests = scratch.tests;
+  std::vector<PlaneModel>& models = scratch.models;  // the full-resolution members' eq. 4 sums
+  std::vector<int>& u0 = scratch.u0;
+  std::vector<int>& v0 = scratch.v0;
+  std::vector<int>& u1 = scratch.u1;
+  std::vector<int>& v1 = scratch.v1;
+  std::vector<int>& col0 = scratch.col0;
+  std::vector<int>& col1 = scratch.col1;
   const std::size_t k = planes.planes.size() + 1;  // indexed by plane id (1-based)
   tests.assign(k, PlaneTest{});
   models.assign(k, PlaneModel{});
@@ -140,7 +134,7 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
   const double fxfy = full.intrinsics.fx * full.intrinsics.fy;
   // Planes below the minimum size at full resolution are dropped and the rest renumbered
   // 1..N in order, so ids stay equal to the label image's values and contiguous.
-  thread_local std::vector<std::int32_t> new_id;
+  std::vector<std::int32_t>& new_id = scratch.new_id;
   new_id.assign(k, 0);
   std::int32_t next = 1;
   bool renumber = false;
@@ -168,7 +162,7 @@ void refine_to_full_resolution(const OrganizedCloud& full, int step, const GrowO
     if (kept != i) std::swap(planes.planes[kept], planes.planes[i]);
     planes.planes[kept++].id = id;
   }
-  shrink_plane_slots(planes.planes, kept);
+  shrink_plane_slots(planes.planes, kept, pool);
   if (edge_on) {
     // The pixels of dropped planes are free again: found within each dropped plane's box (a
     // small plane's box is small), before the relabelling below erases them.

@@ -1,7 +1,8 @@
 #pragma once
 // Reusing PlaneSegments::planes from frame to frame without heap allocations: the vector's own
 // capacity persists, but a slot destroyed by shrinking takes its contour buffer with it. These
-// park such buffers in a per-thread pool and hand them to the next new slot.
+// park such buffers in a pool kept with the scratch of the stage (PlaneScratch) and hand them to
+// the next new slot.
 #include <utility>
 #include <vector>
 
@@ -9,19 +10,18 @@
 
 namespace tunnelmap {
 
-inline std::vector<std::vector<Eigen::Vector3d>>& spare_contour_buffers() {
-  thread_local std::vector<std::vector<Eigen::Vector3d>> pool;
-  return pool;
-}
+// Contour buffers of removed plane slots, waiting for the next new slot.
+struct ContourBufferPool {
+  std::vector<std::vector<Eigen::Vector3d>> spare;
+};
 
 // Appends a slot, with a recycled contour buffer when one is parked.
-inline PlaneSegment& add_plane_slot(std::vector<PlaneSegment>& planes) {
+inline PlaneSegment& add_plane_slot(std::vector<PlaneSegment>& planes, ContourBufferPool& pool) {
   planes.emplace_back();
-  auto& pool = spare_contour_buffers();
-  if (!pool.empty()) {
-    planes.back().contour = std::move(pool.back());
+  if (!pool.spare.empty()) {
+    planes.back().contour = std::move(pool.spare.back());
     planes.back().contour.clear();
-    pool.pop_back();
+    pool.spare.pop_back();
   }
   // Room for a long simplified outline (VGA frames: up to ~100 vertices), so that slots trading
   // planes from frame to frame rarely need to grow; 3 kB per slot.
@@ -30,10 +30,9 @@ inline PlaneSegment& add_plane_slot(std::vector<PlaneSegment>& planes) {
 }
 
 // Shrinks to `n` slots, parking the contour buffers of the removed ones.
-inline void shrink_plane_slots(std::vector<PlaneSegment>& planes, std::size_t n) {
-  auto& pool = spare_contour_buffers();
+inline void shrink_plane_slots(std::vector<PlaneSegment>& planes, std::size_t n, ContourBufferPool& pool) {
   for (std::size_t i = n; i < planes.size(); ++i)
-    if (planes[i].contour.capacity() > 0) pool.push_back(std::move(planes[i].contour));
+    if (planes[i].contour.capacity() > 0) pool.spare.push_back(std::move(planes[i].contour));
   if (n < planes.size()) planes.resize(n);
 }
 

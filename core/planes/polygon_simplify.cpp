@@ -31,6 +31,12 @@ int first_cyclic_max(int n, int first, int count, Score score, std::int64_t& bes
 }  // namespace
 
 void simplify_closed_polygon(const std::vector<PixelPoint>& polygon, double tolerance, std::vector<PixelPoint>& out) {
+  SimplifyScratch scratch;
+  simplify_closed_polygon(polygon, tolerance, out, scratch);
+}
+
+void simplify_closed_polygon(const std::vector<PixelPoint>& polygon, double tolerance, std::vector<PixelPoint>& out,
+                             SimplifyScratch& scratch) {
   out.clear();
   const int n = static_cast<int>(polygon.size());
   if (n == 0) return;
@@ -60,7 +66,7 @@ void simplify_closed_polygon(const std::vector<PixelPoint>& polygon, double tole
   // 2. Douglas-Peucker on both halves, depth first, first half first: a chord whose inner
   // vertices all lie within the tolerance of its line keeps only its first vertex, otherwise
   // it is split at the farthest (first of equals) inner vertex. Exact integer distances.
-  thread_local std::vector<std::pair<int, int>> stack;
+  std::vector<std::pair<int, int>>& stack = scratch.stack;
   stack.clear();
   const int far = start + far_offset < n ? start + far_offset : start + far_offset - n;
   stack.emplace_back(far, start);

@@ -78,14 +78,26 @@ void RegionGrower::configure(const OrganizedCloud& cloud, const GrowOptions& o) 
       step_v_.push_back(dv);
     }
   const std::size_t padded_size = static_cast<std::size_t>(pw_) * (h_ + 2 * pad_);
-  labels_.assign(padded_size, kNoNormal);
-  tried_.assign(padded_size, 0);
+  // Only the padding is set here: reset() and reset_unlabelled() write every interior label
+  // (and reset_unlabelled every interior "tried" mark), so the frame is not written twice.
+  labels_.resize(padded_size);
+  tried_.resize(padded_size);
+  std::int32_t* const lab = labels_.data();
+  const std::size_t band = static_cast<std::size_t>(pad_) * pw_;
+  std::fill(lab, lab + band, kNoNormal);
+  std::fill(lab + padded_size - band, lab + padded_size, kNoNormal);
+  for (int v = 0; v < h_; ++v) {
+    std::int32_t* row = lab + padded(0, v);
+    std::fill(row - pad_, row, kNoNormal);
+    std::fill(row + w_, row + w_ + pad_, kNoNormal);
+  }
   queue_.reserve(static_cast<std::size_t>(w_) * h_);
   rejected_.reserve(static_cast<std::size_t>(w_) * h_);
 }
 
 void RegionGrower::reset(const OrganizedCloud& cloud, const GrowOptions& o) {
   configure(cloud, o);
+  std::fill(tried_.begin(), tried_.end(), 0);
   packed_valid_ = true;
   const float* n = cloud.normals.data()->data();
   const float* pt = cloud.points.data()->data();

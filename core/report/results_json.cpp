@@ -1,10 +1,10 @@
 #include "core/report/results_json.h"
 
 #include "core/report/json_numbers.h"
+#include "core/report/statistics.h"
+#include "core/util/atomic_file.h"
 
-#include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace tunnelmap {
 
@@ -17,21 +17,6 @@ nlohmann::json timings_json(const StageTimings& t) {
   return j;
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
-void mean_std(const std::vector<double>& v, double& mean, double& std) {
-  mean = std = 0.0;
-  if (v.empty()) return;
-  for (double x : v) mean += x;
-  mean /= v.size();
-  for (double x : v) std += (x - mean) * (x - mean);
-  std = std::sqrt(std / v.size());
-}
 }  // namespace
 
 nlohmann::json detection_frame_json(std::size_t index, const std::string& source,
@@ -41,7 +26,7 @@ nlohmann::json detection_frame_json(std::size_t index, const std::string& source
   j["index"] = index;
   j["source"] = source;
   j["detected"] = m.detected;
-  j["status"] = m.status;
+  j["status"] = status_name(m.status);
   if (!m.reason.empty()) j["reason"] = m.reason;
   j["width_m"] = m.has_width() ? nlohmann::json(round_to(m.width_m, 1e-5)) : nlohmann::json(nullptr);
   j["height_m"] = m.has_height() ? nlohmann::json(round_to(m.height_m, 1e-5)) : nlohmann::json(nullptr);
@@ -119,30 +104,37 @@ nlohmann::json planes_frame_json(std::size_t index, const std::string& source,
   return j;
 }
 
-void DetectionSummary::add(const FrameResult& r) {
-  ++frames;
-  totals_.push_back(r.timings_ms.count("total") ? r.timings_ms.at("total") : 0.0);
-  if (!r.map.detected) return;
-  ++detected;
-  if (r.map.status == "partial") ++partial;
+SummaryEntry summary_entry(const FrameResult& r) {
+  SummaryEntry e;
+  const auto total = r.timings_ms.find("total");
+  e.total_ms = total != r.timings_ms.end() ? total->second : 0.0;
+  e.detected = r.map.detected;
+  e.partial = r.map.detected && r.map.status == TunnelStatus::Partial;
   // Statistics of what was measured: an inferred value is the context's or the design's.
-  if (r.map.width_measured()) widths_.push_back(r.map.width_m);
-  if (r.map.height_measured()) heights_.push_back(r.map.height_m);
+  if (r.map.width_measured()) e.width_m = r.map.width_m;
+  if (r.map.height_measured()) e.height_m = r.map.height_m;
+  return e;
+}
+
+void DetectionSummary::add(const SummaryEntry& e) {
+  ++frames;
+  totals_.push_back(e.total_ms);
+  if (!e.detected) return;
+  ++detected;
+  if (e.partial) ++partial;
+  if (e.width_m) widths_.push_back(*e.width_m);
+  if (e.height_m) heights_.push_back(*e.height_m);
 }
 
 void DetectionSummary::finish() {
-  mean_std(widths_, width_mean_m, width_std_m);
-  mean_std(heights_, height_mean_m, height_std_m);
+  const MeanSigma w = mean_sigma(widths_), h = mean_sigma(heights_);
+  width_mean_m = w.mean;
+  width_std_m = w.sigma;
+  height_mean_m = h.mean;
+  height_std_m = h.sigma;
   total_ms_median = median(totals_);
-  width_abs_error_mean_m = height_abs_error_mean_m = 0;
-  if (gt_width_m && !widths_.empty()) {
-    for (double w : widths_) width_abs_error_mean_m += std::abs(w - *gt_width_m);
-    width_abs_error_mean_m /= widths_.size();
-  }
-  if (gt_height_m && !heights_.empty()) {
-    for (double h : heights_) height_abs_error_mean_m += std::abs(h - *gt_height_m);
-    height_abs_error_mean_m /= heights_.size();
-  }
+  width_abs_error_mean_m = gt_width_m ? mean_abs_error(widths_, *gt_width_m) : 0.0;
+  height_abs_error_mean_m = gt_height_m ? mean_abs_error(heights_, *gt_height_m) : 0.0;
 }
 
 nlohmann::json DetectionSummary::to_json() const {
@@ -176,23 +168,8 @@ nlohmann::json detection_document(const nlohmann::json& params, const nlohmann::
   return doc;
 }
 
-std::string detection_csv(const nlohmann::json& frames) {
-  std::ostringstream out;
-  out << "index,source,detected,status,width_m,height_m,planes,total_ms\n";
-  for (const auto& f : frames) {
-    std::string source = f.value("source", "");
-    std::replace(source.begin(), source.end(), ',', ';');
-    out << f.value("index", 0) << ',' << source << ',' << (f.value("detected", false) ? 1 : 0) << ','
-        << f.value("status", "") << ',';
-    if (f["width_m"].is_number()) out << f["width_m"].get<double>();
-    out << ',';
-    if (f["height_m"].is_number()) out << f["height_m"].get<double>();
-    out << ',' << f.value("planes", 0) << ',';
-    if (f.contains("timings_ms") && f["timings_ms"].contains("total"))
-      out << f["timings_ms"]["total"].get<double>();
-    out << '\n';
-  }
-  return out.str();
+void write_detection_json(const std::string& path, const nlohmann::json& document) {
+  write_file_atomically(path, [&](std::ostream& out) { out << document.dump(2) << "\n"; });
 }
 
 }  // namespace tunnelmap

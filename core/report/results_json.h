@@ -19,8 +19,18 @@ nlohmann::json detection_frame_json(std::size_t index, const std::string& source
 nlohmann::json planes_frame_json(std::size_t index, const std::string& source,
                                  const PlaneSegments& planes, const StageTimings& timings_ms);
 
-// Mean and population standard deviation of the detected frames' width and height (the
-// paper's mean(sigma)), plus errors against ground truth when known.
+// What the summary takes of one frame; the GUI keeps it per results-table row, so a document
+// rebuilt from the rows has the summary `detect` prints.
+struct SummaryEntry {
+  bool detected = false;
+  bool partial = false;
+  std::optional<double> width_m, height_m;  // measured in the frame (not context or design)
+  double total_ms = 0.0;
+};
+SummaryEntry summary_entry(const FrameResult& r);
+
+// Mean and sample standard deviation (n - 1, core/report/statistics.h) of the width and height
+// measured in the detected frames (the paper's mean(sigma)), plus errors against ground truth.
 struct DetectionSummary {
   int frames = 0;
   int detected = 0;
@@ -30,7 +40,8 @@ struct DetectionSummary {
   double width_abs_error_mean_m = 0, height_abs_error_mean_m = 0;  // valid when gt is known
   double total_ms_median = 0;
 
-  void add(const FrameResult& r);
+  void add(const FrameResult& r) { add(summary_entry(r)); }
+  void add(const SummaryEntry& e);
   void finish();
   nlohmann::json to_json() const;
 
@@ -38,11 +49,12 @@ struct DetectionSummary {
   std::vector<double> widths_, heights_, totals_;
 };
 
-// The whole document: {"tool","version","method","params","frames","summary"}.
+// The whole document: {"tool","version","method","input","params","frames","summary"}.
 nlohmann::json detection_document(const nlohmann::json& params, const nlohmann::json& frames,
                                   const DetectionSummary& summary, const std::string& input);
 
-// One CSV row per frame (header first) for spreadsheets.
-std::string detection_csv(const nlohmann::json& frames);
+// THE writer of a results document (`detect --json`, the GUI's results export): two-space
+// indented, one trailing newline, written atomically.
+void write_detection_json(const std::string& path, const nlohmann::json& document);
 
 }  // namespace tunnelmap

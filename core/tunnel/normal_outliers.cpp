@@ -14,19 +14,6 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 namespace {
 
-// Per-thread scratch of the histogram test, reused frame after frame: no allocation per frame
-// in the steady state (checked by tests/allocation).
-struct OutlierScratch {
-  std::vector<bool> use, in;
-  std::vector<double> weight;
-  std::vector<int> bin_of;
-};
-
-OutlierScratch& scratch() {
-  thread_local OutlierScratch s;
-  return s;
-}
-
 Eigen::Vector3d weighted_mean(const std::vector<WeightedNormal>& normals,
                               const std::vector<bool>& use) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -86,12 +73,17 @@ NormalClassStats reject_normal_outliers(const std::vector<WeightedNormal>& norma
 
 void reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
                             double max_deg, NormalClassStats& s) {
+  OutlierScratch scratch;
+  reject_normal_outliers(normals, bin_deg, max_deg, s, scratch);
+}
+
+void reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
+                            double max_deg, NormalClassStats& s, OutlierScratch& scr) {
   s.valid = false;
   s.mean = Eigen::Vector3d::Zero();
   s.sd_deg = 0.0;
   s.inlier.assign(normals.size(), false);
   if (normals.empty()) return;
-  OutlierScratch& scr = scratch();
   Eigen::Vector3d mean = robust_seed(normals, max_deg, scr.use);
   for (int iter = 0; iter < 4 && mean.norm() > 0; ++iter) {
     histogram_inliers(normals, mean, bin_deg, max_deg, scr, scr.in);

@@ -23,8 +23,17 @@ struct NormalClassStats {
 // empty bin after the heaviest one, never beyond `max_deg`; recompute the weighted mean.
 NormalClassStats reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
                                         double max_deg);
-// The same, written into `out`: reuses out.inlier's buffer, so a detector calling it every frame
-// with the same `out` allocates nothing in the steady state.
+// The buffers of the histogram test, kept by the caller (TunnelScratch).
+struct OutlierScratch {
+  std::vector<bool> use, in;  // the seed's neighbours; the current inliers
+  std::vector<double> weight;  // per histogram bin
+  std::vector<int> bin_of;     // per normal
+};
+// The same, written into `out`: reuses out.inlier's buffer and those of `scratch`, so a detector
+// calling it every frame with the same `out` and `scratch` allocates nothing in the steady state.
+void reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
+                            double max_deg, NormalClassStats& out, OutlierScratch& scratch);
+// The same with scratch of its own: allocates it on every call.
 void reject_normal_outliers(const std::vector<WeightedNormal>& normals, double bin_deg,
                             double max_deg, NormalClassStats& out);
 

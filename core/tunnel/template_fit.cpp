@@ -44,11 +44,9 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
                           const Eigen::Vector3d& rough_right, const Eigen::Vector3d& rough_up,
                           const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
                           TemplateFrame& t) {
-  {  // Default values in every field, but the strings keep their buffers.
+  {  // Default values in every field, but the reason keeps its buffer.
     TemplateFrame fresh;
-    fresh.status.swap(t.status);
     fresh.reason.swap(t.reason);
-    fresh.status.clear();
     fresh.reason.clear();
     t = std::move(fresh);
   }
@@ -57,7 +55,7 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
     if (!seen[a] || !seen[b]) return true;
     angle = angle_deg(means[a], -means[b]);
     if (angle <= max_pair_angle_deg) return true;
-    t.status = "no_parallel_pair";
+    t.status = TunnelStatus::NoParallelPair;
     set_text(t.reason, text, angle, max_pair_angle_deg);
     return false;
   };
@@ -77,7 +75,7 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
   if (have_a && have_b) {
     t.pair_angle_deg = std::abs(angle_deg(a, b) - 90.0);
     if (t.pair_angle_deg > max_pair_angle_deg) {
-      t.status = "not_rectangular";
+      t.status = TunnelStatus::NotRectangular;
       set_text(t.reason, "wall pairs are %.1f deg from perpendicular (max %.1f)", t.pair_angle_deg,
                max_pair_angle_deg);
       return;

@@ -4,11 +4,13 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "core/tunnel/tunnel_status.h"
+
 namespace tunnelmap {
 
 struct TemplateFrame {
   bool ok = false;
-  std::string status;  // "", "no_parallel_pair" or "not_rectangular"
+  TunnelStatus status = TunnelStatus::Ok;  // else NoParallelPair or NotRectangular
   std::string reason;
   Eigen::Vector3d right = Eigen::Vector3d::UnitX();  // = left wall's normal = -right wall's
   Eigen::Vector3d up = -Eigen::Vector3d::UnitY();    // = floor's normal = -roof's
@@ -23,7 +25,7 @@ TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eige
                                        const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,
                                        const Eigen::Vector3d& camera_forward,
                                        double max_pair_angle_deg);
-// The same, written into `out`: its status/reason strings keep their buffers, so a caller that
+// The same, written into `out`: its reason string keeps its buffer, so a caller that
 // reuses `out` allocates nothing per frame in the steady state.
 void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector3d& n_right,
                               const Eigen::Vector3d& n_top, const Eigen::Vector3d& n_bottom,

@@ -8,9 +8,9 @@
 namespace tunnelmap {
 
 namespace {
-double median(const std::vector<double>& values) {
+// `v` is scratch: its buffer is reused (no allocation per frame in the steady state).
+double median_of(const std::vector<double>& values, std::vector<double>& v) {
   if (values.empty()) return 0.0;
-  thread_local std::vector<double> v;  // scratch: no allocation per frame in the steady state
   v.assign(values.begin(), values.end());
   const size_t mid = v.size() / 2;
   std::nth_element(v.begin(), v.begin() + mid, v.end());
@@ -23,12 +23,16 @@ double median(const std::vector<double>& values) {
 
 void TunnelContext::Ring::push(double v) {
   if (values.size() < kWindow) {
-    if (values.empty()) values.reserve(kWindow);  // no reallocation while the window fills
+    if (values.empty()) {  // no reallocation while the window fills
+      values.reserve(kWindow);
+      work.reserve(kWindow);
+    }
     values.push_back(v);
-    return;
+  } else {
+    values[next] = v;
+    next = (next + 1) % kWindow;
   }
-  values[next] = v;
-  next = (next + 1) % kWindow;
+  median = median_of(values, work);
 }
 
 void TunnelContext::accept(const TunnelMap& map) {
@@ -36,8 +40,5 @@ void TunnelContext::accept(const TunnelMap& map) {
   if (map.width_measured()) width_.push(map.width_m);
   if (map.height_measured()) height_.push(map.height_m);
 }
-
-double TunnelContext::width_m() const { return median(width_.values); }
-double TunnelContext::height_m() const { return median(height_.values); }
 
 }  // namespace tunnelmap

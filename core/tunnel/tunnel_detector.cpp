@@ -13,6 +13,7 @@
 
 #include "core/tunnel/normal_outliers.h"
 #include "core/tunnel/template_fit.h"
+#include "core/tunnel/tunnel_scratch.h"
 #include "core/tunnel/wall_classification.h"
 #include "core/tunnel/wall_geometry.h"
 #include "core/tunnel/zone_clustering.h"
@@ -46,23 +47,9 @@ constexpr WallClass kWalls[] = {WallClass::Left, WallClass::Right, WallClass::To
 }
 
 // The caller writes map.reason.
-void fail(TunnelMap& map, const char* status) {
+void fail(TunnelMap& map, TunnelStatus status) {
   map.detected = false;
   map.status = status;
-}
-
-// Per-thread scratch of one detection, reused frame after frame.
-struct DetectorScratch {
-  std::vector<size_t> members;
-  std::vector<WeightedNormal> normals;
-  std::vector<ZonePosition> positions;
-  NormalClassStats stats;
-  TemplateFrame frame;
-};
-
-DetectorScratch& scratch() {
-  thread_local DetectorScratch s;
-  return s;
 }
 
 // Gives `map` the values of a default TunnelMap while keeping its vectors' and strings'
@@ -74,7 +61,6 @@ void reset_keeping_buffers(TunnelMap& map) {
     keep.swap(old);
     keep = old;
   };
-  recycle(fresh.status, map.status);
   recycle(fresh.reason, map.reason);
   recycle(fresh.plane_classes, map.plane_classes);
   recycle(fresh.plane_outlier, map.plane_outlier);
@@ -106,13 +92,12 @@ void check_options(const TunnelOptions& o) {
 // Steps 1-2: classes, outliers and per-class mean normals. seen[c]: the class kept a plane.
 // map.reason lists the classes without planes (read only if too few walls remain).
 void classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& rough,
-                         const TunnelOptions& opt, TunnelMap& map,
+                         const TunnelOptions& opt, TunnelMap& map, TunnelScratch& scr,
                          Eigen::Vector3d means[4], bool seen[4], double support[4]) {
   const size_t n = planes.planes.size();
   classify_planes(rough, planes, opt.class_angle_deg, map.plane_candidate_classes);
   map.plane_classes = map.plane_candidate_classes;  // copy-assignment reuses the buffer
   map.plane_outlier.assign(n, false);
-  DetectorScratch& scr = scratch();
   std::string& missing = map.reason;
   missing.clear();
   for (WallClass c : kWalls) {
@@ -127,7 +112,7 @@ void classify_and_reject(const PlaneSegments& planes, const RoughTunnelFrame& ro
                          static_cast<double>(std::max(1, planes.planes[i].points))});
     }
     NormalClassStats& st = scr.stats;
-    reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg, st);
+    reject_normal_outliers(normals, opt.outlier_bin_deg, opt.outlier_max_deg, st, scr.outliers);
     Wall& w = map.wall(c);
     w.cls = c;
     support[static_cast<int>(c)] = 0.0;
@@ -178,7 +163,7 @@ void infer_from_design(const bool measured[4], int a, int b, double design_m, do
 }  // namespace
 
 void describe_tunnel_map(TunnelMap& map) {
-  if (map.status == "ok") {
+  if (map.status == TunnelStatus::Ok) {
     set_text(map.reason, "width %.3f m, height %.3f m", map.width_m, map.height_m);
     return;
   }
@@ -198,7 +183,7 @@ void describe_tunnel_map(TunnelMap& map) {
 namespace {
 
 void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const TunnelOptions& opt,
-         const TunnelContext* context, TunnelMap& map) {
+         const TunnelContext* context, TunnelMap& map, TunnelScratch& scratch) {
   const size_t n = planes.planes.size();
   map.plane_classes.assign(n, WallClass::Unassigned);
   map.plane_candidate_classes.assign(n, WallClass::Unassigned);
@@ -209,7 +194,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   map.axis_dir = rough.forward;
 
   if (n < 2) {
-    fail(map, "too_few_planes");
+    fail(map, TunnelStatus::TooFewPlanes);
     set_text(map.reason, "%.0f planes detected, at least 2 needed", double(n));
     return;
   }
@@ -219,7 +204,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   Eigen::Vector3d means[4];
   bool seen[4];
   double support[4];
-  classify_and_reject(planes, rough, opt, map, means, seen, support);
+  classify_and_reject(planes, rough, opt, map, scratch, means, seen, support);
   // A pair that is not parallel, one of whose walls has far fewer points than the other: the
   // weak one is taken as not seen (e.g. the floor near a manhole plate, where what is left of
   // it is a sliver of something else), as long as two walls remain; the map is then partial.
@@ -235,18 +220,18 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
         map.plane_classes[i] = WallClass::Unassigned;
   }
   if (count(seen) < 2) {
-    fail(map, "missing_wall");
+    fail(map, TunnelStatus::MissingWall);
     return;
   }
 
   // Step 3: rectangular template.
-  TemplateFrame& tf = scratch().frame;
+  TemplateFrame& tf = scratch.frame;
   fit_partial_template(means, seen, rough.right, rough.up, rough.forward, opt.max_pair_angle_deg,
                        tf);
   if (!tf.ok) {
     map.detected = false;
-    map.status = tf.status;  // copy-assignments reuse the map's buffers
-    map.reason = tf.reason;
+    map.status = tf.status;
+    map.reason = tf.reason;  // copy-assignment reuses the map's buffer
     return;
   }
   const Eigen::Vector3d template_normal[4] = {tf.right, -tf.right, -tf.up, tf.up};
@@ -265,7 +250,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   // walls that were not measured (they are drawn only where the measured walls were seen).
   double span[4] = {0, 0, 0, 0};
   std::string weak;  // walls seen without a supported zone (small: no allocation)
-  std::vector<ZonePosition>& positions = scratch().positions;
+  std::vector<ZonePosition>& positions = scratch.positions;
   double axial_min = std::numeric_limits<double>::infinity();
   double axial_max = -axial_min;
   for (WallClass c : kWalls) {
@@ -291,7 +276,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
       positions.push_back({-w.normal.dot(p.centroid), p.points});
     }
     if (!seen[ci]) continue;
-    cluster_zone_positions(positions, zone_scaling, w.clusters);
+    cluster_zone_positions(positions, zone_scaling, w.clusters, scratch.zones);
     const int best = outermost_supported_cluster(w.clusters, zone_scaling);
     if (best < 0) {
       if (!weak.empty()) weak += "; ";
@@ -317,7 +302,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
     w.offset_m = offsets[ci];
   }
   if (count(measured) < 2) {
-    fail(map, "missing_wall");
+    fail(map, TunnelStatus::MissingWall);
     if (!weak.empty()) {
       if (!map.reason.empty()) map.reason += "; ";
       map.reason += weak;
@@ -358,7 +343,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   infer_from_design(measured, 2, 3, opt.design_height_m, offsets, map.height_source, map.height_m,
                     map);
   if (map.width_source == DimensionSource::Unseen && map.height_source == DimensionSource::Unseen) {
-    fail(map, "missing_wall");
+    fail(map, TunnelStatus::MissingWall);
     set_text(map.reason, "neither the width nor the height was measured (walls seen: %s%s%s%s)",
              measured[0] ? "left " : "", measured[1] ? "right " : "", measured[2] ? "top " : "",
              measured[3] ? "bottom" : "");
@@ -377,7 +362,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   // Step 5: template prior and context of earlier scans.
   if (map.width_source == DimensionSource::Measured) {
     if (map.width_m < opt.width_min_m || map.width_m > opt.width_max_m) {
-      fail(map, "out_of_template");
+      fail(map, TunnelStatus::OutOfTemplate);
       set_text(map.reason, "width %.3f m outside [%.2f, %.2f]", map.width_m, opt.width_min_m,
                opt.width_max_m);
       return;
@@ -385,14 +370,14 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   }
   if (map.height_source == DimensionSource::Measured) {
     if (map.height_m < opt.height_min_m || map.height_m > opt.height_max_m) {
-      fail(map, "out_of_template");
+      fail(map, TunnelStatus::OutOfTemplate);
       set_text(map.reason, "height %.3f m outside [%.2f, %.2f]", map.height_m, opt.height_min_m,
                opt.height_max_m);
       return;
     }
   }
   map.detected = true;
-  map.status = count(measured) == 4 ? "ok" : "partial";
+  map.status = count(measured) == 4 ? TunnelStatus::Ok : TunnelStatus::Partial;
   describe_tunnel_map(map);
   if (context) apply_tunnel_context(map, opt, *context);
 }
@@ -408,13 +393,20 @@ TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_c
 
 void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                    const TunnelOptions& options, const TunnelContext* context, TunnelMap& map) {
+  TunnelScratch scratch;
+  detect_tunnel(planes, up_camera, options, context, map, scratch);
+}
+
+void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                   const TunnelOptions& options, const TunnelContext* context, TunnelMap& map,
+                   TunnelScratch& scratch) {
   const double up_norm = up_camera.norm();
   if (!std::isfinite(up_norm) || up_norm < 1e-9)
     throw ParameterError("tunnel detection: the up vector must be finite and non-zero");
   check_options(options);
   reset_keeping_buffers(map);
   StageTimer timer(map.timings_ms, "tunnel");
-  run(planes, up_camera, options, context, map);
+  run(planes, up_camera, options, context, map, scratch);
 }
 
 void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const TunnelContext& context) {
@@ -424,11 +416,11 @@ void apply_tunnel_context(TunnelMap& map, const TunnelOptions& opt, const Tunnel
   const double dh =
       map.height_measured() && context.has_height() ? map.height_m - context.height_m() : 0.0;
   if (std::abs(dw) > opt.context_tolerance_m) {
-    fail(map, "inconsistent_with_context");
+    fail(map, TunnelStatus::InconsistentWithContext);
     set_text(map.reason, "width %.3f m differs from the context's %.3f m by more than %.0f mm",
              map.width_m, context.width_m(), opt.context_tolerance_m * 1000.0);
   } else if (std::abs(dh) > opt.context_tolerance_m) {
-    fail(map, "inconsistent_with_context");
+    fail(map, TunnelStatus::InconsistentWithContext);
     set_text(map.reason, "height %.3f m differs from the context's %.3f m by more than %.0f mm",
              map.height_m, context.height_m(), opt.context_tolerance_m * 1000.0);
   }

@@ -6,30 +6,9 @@
 
 #include "core/planes/plane_segment.h"
 #include "core/tunnel/tunnel_map.h"
+#include "core/tunnel/tunnel_options.h"  // TunnelOptions
 
 namespace tunnelmap {
-
-struct TunnelOptions {
-  double class_angle_deg = 35.0;
-  double outlier_bin_deg = 1.0;
-  double outlier_max_deg = 8.0;
-  double zone_cluster_m = 0.010;
-  int min_cluster_points = 300;
-  // Zone support / gap scaling with the wall's distance (zone_support.h); 0 = off.
-  double zone_support_ref_m = 0.0;
-  double zone_gap_ref_m = 0.0;
-  double context_tolerance_m = 0.040;
-  double max_pair_angle_deg = 10.0;
-  double width_min_m = 0.3, width_max_m = 3.0;
-  double height_min_m = 0.3, height_max_m = 3.0;
-  double forbidden_band_m = 0.15;
-  // Symmetric zone prior (zone_clustering.h): a wall seen only by its middle plate borrows the
-  // opposite wall's edge-to-middle step, up to this size (0 = off).
-  double max_symmetric_step_m = 0.03;
-  // Design prior (0 = none): infers a wall out of view from the opposite wall, or gives the
-  // dimension itself when neither wall of the pair was measured.
-  double design_width_m = 0.0, design_height_m = 0.0;
-};
 
 // Context of previous scans in a sequence without poses: the widths and heights earlier frames
 // measured. A new frame's measured dimensions must agree with it within context_tolerance_m.
@@ -44,14 +23,16 @@ class TunnelContext {
   bool empty() const { return width_.values.empty() && height_.values.empty(); }
   bool has_width() const { return !width_.values.empty(); }
   bool has_height() const { return !height_.values.empty(); }
-  double width_m() const;   // median of accepted widths (0 when none)
-  double height_m() const;  // median of accepted heights
+  double width_m() const { return width_.median; }    // median of accepted widths (0 when none)
+  double height_m() const { return height_.median; }  // median of accepted heights
   void clear() { width_ = Ring(), height_ = Ring(); }
 
  private:
   struct Ring {
     std::vector<double> values;  // a ring buffer once kWindow values were accepted
     std::size_t next = 0;        // slot the next value replaces when full
+    double median = 0.0;         // of `values`, kept up to date by push (0 when empty)
+    std::vector<double> work;    // push's copy for the median: reused, no allocation per frame
     void push(double v);
   };
   Ring width_, height_;
@@ -62,8 +43,14 @@ class TunnelContext {
 TunnelMap detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                         const TunnelOptions& options, const TunnelContext* context);
 // The same, written into `map`: every field is reset to what the returned map would hold, but
-// the vectors and strings keep their buffers, so detecting frame after frame into one map
-// allocates nothing in the steady state (checked by tests/allocation).
+// the vectors and strings keep their buffers; the stage's own buffers are `scratch`'s
+// (core/tunnel/tunnel_scratch.h, one per concurrent caller). Detecting frame after frame into
+// one map with one scratch allocates nothing in the steady state (checked by tests/allocation).
+struct TunnelScratch;
+void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
+                   const TunnelOptions& options, const TunnelContext* context, TunnelMap& map,
+                   TunnelScratch& scratch);
+// The same with scratch of its own: allocates it on every call.
 void detect_tunnel(const PlaneSegments& planes, const Eigen::Vector3d& up_camera,
                    const TunnelOptions& options, const TunnelContext* context, TunnelMap& map);
 

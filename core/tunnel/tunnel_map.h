@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/tunnel/tunnel_status.h"
 #include "core/util/stage_timer.h"
 
 namespace tunnelmap {
@@ -56,8 +57,8 @@ struct TunnelPart {
 };
 
 struct TunnelMap {
-  bool detected = false;           // "ok" or "partial"
-  std::string status = "not_run";  // "ok", "partial", "too_few_planes", "no_parallel_pair", ...
+  bool detected = false;           // Ok or Partial
+  TunnelStatus status = TunnelStatus::NotRun;  // names: status_name()
   std::string reason;              // human-readable detail for the status
   double width_m = 0.0;            // left-right distance (when width_source is not Unseen)
   double height_m = 0.0;           // bottom-top distance (when height_source is not Unseen)

@@ -21,13 +21,20 @@ void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, 
 
 void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
                             std::vector<ZoneCluster>& out) {
+  ZoneClusterScratch scratch;
+  cluster_zone_positions(positions, scaling, out, scratch);
+}
+
+void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
+                            std::vector<ZoneCluster>& out, ZoneClusterScratch& scratch) {
   std::sort(positions.begin(), positions.end(),
             [](const ZonePosition& a, const ZonePosition& b) { return a.offset_m > b.offset_m; });
   const size_t n = positions.size();
-  // Per-thread scratch reused frame after frame (no allocation per frame).
-  thread_local std::vector<int> cluster_of;
-  thread_local std::vector<double> lo, hi;  // offset range of each cluster's linking planes
-  thread_local std::vector<double> weighted_sum, weight;
+  std::vector<int>& cluster_of = scratch.cluster_of;
+  std::vector<double>& lo = scratch.lo;
+  std::vector<double>& hi = scratch.hi;
+  std::vector<double>& weighted_sum = scratch.weighted_sum;
+  std::vector<double>& weight = scratch.weight;
   cluster_of.assign(n, -1);
   lo.clear();
   hi.clear();

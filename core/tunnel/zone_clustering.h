@@ -20,13 +20,22 @@ struct ZonePosition {
 // Returned outermost first (largest offset = furthest from the tunnel inside).
 std::vector<ZoneCluster> cluster_zone_positions(std::vector<ZonePosition> positions, double gap_m,
                                                int anchor_points = 0);
-// The same, written into `out` (buffers reused: no allocation per frame in the steady state).
-// Sorts `positions` in place (outermost first).
+// The same, written into `out` (its buffer reused). Sorts `positions` in place (outermost first).
 void cluster_zone_positions(std::vector<ZonePosition>& positions, double gap_m, int anchor_points,
                             std::vector<ZoneCluster>& out);
+// The buffers of the clustering, kept by the caller (TunnelScratch): with them and a reused
+// `out`, clustering frame after frame allocates nothing in the steady state.
+struct ZoneClusterScratch {
+  std::vector<int> cluster_of;              // per position
+  std::vector<double> lo, hi;               // offset range of each cluster's linking planes
+  std::vector<double> weighted_sum, weight;  // per cluster, for the point-weighted mean
+};
 // The same with gap and anchor support taken at each plane's offset (zone_support.h): two
 // neighbouring positions are split by the gap at the outer one, a plane is an anchor when it has
 // scaling.support_at(its offset) points. Unscaled (both references 0) it is the one above.
+void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
+                            std::vector<ZoneCluster>& out, ZoneClusterScratch& scratch);
+// The same with scratch of its own: allocates it on every call.
 void cluster_zone_positions(std::vector<ZonePosition>& positions, const ZoneScaling& scaling,
                             std::vector<ZoneCluster>& out);
 

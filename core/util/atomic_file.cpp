@@ -12,6 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string temporary_name(const std::string& path) {
+  // Not scratch but a random source: one engine per thread because threads writing outputs at
+  // once must not share (race on) one engine, and each is seeded from random_device so their
+  // temporary names differ; a local engine would read random_device on every file.
   static thread_local std::mt19937_64 rng{std::random_device{}()};
   const fs::path p(path);
   // Keep the extension last: OpenCV and VTK choose the format from it.

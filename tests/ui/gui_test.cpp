@@ -189,18 +189,19 @@ class GuiTest : public QObject {
     QFile json_file(dir_.filePath("results.json"));
     QVERIFY(json_file.open(QIODevice::ReadOnly));
     const auto json = nlohmann::json::parse(json_file.readAll().toStdString());
-    QCOMPARE(QString::fromStdString(json.at("format")), QString("tunnelmap-results/1"));
+    QCOMPARE(QString::fromStdString(json.at("tool")), QString("tunnelmap"));  // detect's document
     QCOMPARE(int(json.at("frames").size()), 1);
     QCOMPARE(json.at("frames")[0].at("detected").get<bool>(), true);
-    QVERIFY(std::abs(json.at("frames")[0].at("width_m").get<double>() - r.map.width_m) < 1e-6);
+    // Rounded to 0.01 mm, as `detect --json` writes it.
+    QVERIFY(std::abs(json.at("frames")[0].at("width_m").get<double>() - r.map.width_m) <= 5e-6);
     QVERIFY(json.at("params").contains("grow.angle_deg"));
     trigger("exportResultsCsv", dir_.filePath("results.csv"));
     QFile csv(dir_.filePath("results.csv"));
     QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
     const QStringList lines = QString(csv.readAll()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 2);
-    QVERIFY(lines[0].startsWith("frame,detected,status,width_m"));
-    QCOMPARE(lines[1].section(',', 3, 3).toDouble(), QString::number(r.map.width_m).toDouble());
+    QVERIFY(lines[0].startsWith("index,source,method,detected,status,width_m"));
+    QVERIFY(std::abs(lines[1].section(',', 5, 5).toDouble() - r.map.width_m) <= 5e-6);
 
     // Screenshot: a PNG of the window.
     trigger("saveScreenshot", dir_.filePath("shot.png"));
@@ -228,6 +229,46 @@ class GuiTest : public QObject {
     QCOMPARE(w.view3d()->scene().layer_size(tunnelmap::scene::Layer::Mesh), vtkIdType(map.value("face")));
     QVERIFY(!w.open_mesh(dir_.filePath("results.csv")));  // not a PLY: error names the file
     QVERIFY(w.last_error().contains("results.csv"));
+  }
+
+  // The results export is `detect`'s model: a frame without pose (no station map on either side)
+  // exported by the GUI equals `detect --json/--csv` on it with the exported parameters,
+  // timings aside.
+  void resultsExportEqualsDetectOutput() {
+    MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    const QString png = sample_ + "/depth/000000.png";
+    QVERIFY(QFile::exists(png));
+    QVERIFY(w.open_input(png));
+    QVERIFY(wait_frame(w));
+    QVERIFY(w.current()->result.map.detected);
+    QVERIFY(w.export_results_json(dir_.filePath("gui.json")));
+    QVERIFY(w.export_results_csv(dir_.filePath("gui.csv")));
+    QProcess cli;
+    cli.start(TUNNELMAP_CLI_PATH, {"detect", png, "-q", "--params", dir_.filePath("gui.json"), "--json",
+                                   dir_.filePath("cli.json"), "--csv", dir_.filePath("cli.csv")});
+    QVERIFY(cli.waitForFinished(120000));
+    QCOMPARE(cli.exitCode(), 0);
+    const auto read = [&](const char* name) {
+      QFile f(dir_.filePath(name));
+      return f.open(QIODevice::ReadOnly) ? f.readAll().toStdString() : std::string();
+    };
+    const auto gui = nlohmann::json::parse(read("gui.json")), det = nlohmann::json::parse(read("cli.json"));
+    const auto comparable = [](nlohmann::json doc) {
+      for (auto& f : doc["frames"]) f.erase("timings_ms");
+      doc["summary"].erase("total_ms_median");
+      doc.erase("input");  // the GUI's absolute path
+      return QString::fromStdString(doc.dump(1));
+    };
+    QCOMPARE(comparable(gui), comparable(det));
+    // CSV: the same header and cells up to "planes" (then total_ms, a timing).
+    const QStringList g = QString::fromStdString(read("gui.csv")).split('\n', Qt::SkipEmptyParts);
+    const QStringList c = QString::fromStdString(read("cli.csv")).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(g.size(), 2);
+    QCOMPARE(c.size(), 2);
+    QCOMPARE(g[0], c[0]);
+    QCOMPARE(g[1].section(',', 0, 9), c[1].section(',', 0, 9));
   }
 
   // Method selector: switching the combo to Qhull re-runs the frame with the convex-hull baseline;

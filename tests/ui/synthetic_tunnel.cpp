@@ -73,7 +73,7 @@ scene::ProcessedFrame make_synthetic_tunnel(double w, double h, double length) {
   // two forbidden edge bands per wall.
   TunnelMap& map = out.result.map;
   map.detected = true;
-  map.status = "ok";
+  map.status = TunnelStatus::Ok;
   map.width_m = w;
   map.height_m = h;
   map.axis_point = Eigen::Vector3d::Zero();

@@ -36,7 +36,9 @@ PixelBox find_boundary_blue(const RgbImage& img, int x0, int y0, int x1, int y1)
 }
 
 PixelBox find_traversable_red(const RgbImage& img, int x0, int y0, int x1, int y1) {
-  return find(img, x0, y0, x1, y1, [](int r, int g, int b) { return r > 200 && g < 60 && b < 60; });
+  // The fill at kZoneFillOpacity over the background reads about (110, 25, 27); the map mesh's
+  // lit red about (150-255, <60, <60). No other colour of the scene has such a hue.
+  return find(img, x0, y0, x1, y1, [](int r, int g, int b) { return r > 90 && g * 10 < r * 4 && b * 10 < r * 4; });
 }
 
 int distinct_colors(const RgbImage& img) {

@@ -18,8 +18,9 @@ struct PixelBox {
   }
 };
 
-// Saturated boundary blue / traversable red as drawn by TunnelScene (unlit, so exact up to
-// antialiasing); `x0..x1`/`y0..y1` restrict the search (whole image by default).
+// Boundary blue as drawn by TunnelScene (unlit, so exact up to antialiasing), and traversable
+// red: its opaque outline or its translucent fill over the dark background (a red hue bright
+// enough not to be background); `x0..x1`/`y0..y1` restrict the search (whole image by default).
 PixelBox find_boundary_blue(const RgbImage& img, int x0 = 0, int y0 = 0, int x1 = -1, int y1 = -1);
 PixelBox find_traversable_red(const RgbImage& img, int x0 = 0, int y0 = 0, int x1 = -1, int y1 = -1);
 

@@ -10,7 +10,7 @@ Rgb wall_class_color(WallClass c) {
     case WallClass::Left: return {0.30, 0.78, 0.30};
     case WallClass::Right: return {0.95, 0.50, 0.80};
     case WallClass::Top: return {0.62, 0.45, 0.90};
-    case WallClass::Bottom: return {0.85, 0.75, 0.40};
+    case WallClass::Bottom: return {0.55, 0.85, 1.00};  // pale sky: apart from "left" green for deuteranopes
     case WallClass::Unassigned: break;
   }
   return {0.60, 0.60, 0.60};

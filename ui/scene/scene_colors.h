@@ -14,6 +14,11 @@ constexpr Rgb kBoundaryBlue{0.0, 0.2, 1.0};
 constexpr Rgb kTraversableRed{1.0, 0.08, 0.08};
 constexpr Rgb kForbiddenAmber{1.0, 0.7, 0.0};
 constexpr Rgb kFrustumGrey{0.85, 0.85, 0.85};
+constexpr Rgb kGridGrey{0.72, 0.72, 0.72};
+constexpr Rgb kLegendText{0.95, 0.95, 0.95};  // also the grid labels
+constexpr Rgb kMeasureWhite{1.0, 1.0, 1.0};  // picks, the measured segment and its length (nothing else is pure white)
+// Zone fills let the wall's points show through; their outlines are opaque.
+constexpr double kZoneFillOpacity = 0.35;
 constexpr Rgb kBackground{0.12, 0.12, 0.14};
 
 Rgb wall_class_color(WallClass c);

@@ -8,7 +8,8 @@ namespace tunnelmap::scene {
 const std::vector<Layer>& all_layers() {
   static const std::vector<Layer> layers = {Layer::Cloud,     Layer::Mesh,        Layer::Planes,
                                             Layer::Boundary,  Layer::Traversable, Layer::Forbidden,
-                                            Layer::Frustum,   Layer::Axes,        Layer::Legend};
+                                            Layer::Frustum,   Layer::Axes,        Layer::Legend,
+                                            Layer::Grid};
   return layers;
 }
 
@@ -23,6 +24,7 @@ const char* layer_name(Layer l) {
     case Layer::Frustum: return "frustum";
     case Layer::Axes: return "axes";
     case Layer::Legend: return "legend";
+    case Layer::Grid: return "grid";
   }
   return "?";
 }
@@ -38,6 +40,7 @@ const char* layer_title(Layer l) {
     case Layer::Frustum: return "Camera frustum";
     case Layer::Axes: return "Axes";
     case Layer::Legend: return "Legend";
+    case Layer::Grid: return "Distance grid";
   }
   return "?";
 }

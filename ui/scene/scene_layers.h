@@ -5,8 +5,8 @@
 
 namespace tunnelmap::scene {
 
-enum class Layer { Cloud, Mesh, Planes, Boundary, Traversable, Forbidden, Frustum, Axes, Legend };
-constexpr int kLayerCount = 9;
+enum class Layer { Cloud, Mesh, Planes, Boundary, Traversable, Forbidden, Frustum, Axes, Legend, Grid };
+constexpr int kLayerCount = 10;
 
 const std::vector<Layer>& all_layers();
 const char* layer_name(Layer l);   // "cloud", "mesh", "planes", ...

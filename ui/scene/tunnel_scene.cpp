@@ -1,8 +1,11 @@
 #include "ui/scene/tunnel_scene.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkCoordinate.h>
+#include <vtkLabeledDataMapper.h>
+#include <vtkLightKit.h>
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -17,21 +20,6 @@ namespace tunnelmap::scene {
 
 namespace {
 int idx(Layer l) { return static_cast<int>(l); }
-
-vtkSmartPointer<vtkPolyData> square_symbol() {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  points->InsertNextPoint(1, 1, 0);
-  points->InsertNextPoint(0, 1, 0);
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  const vtkIdType quad[] = {0, 1, 2, 3};
-  polys->InsertNextCell(4, quad);
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  return poly;
-}
 
 void color_axis_label(vtkCaptionActor2D* caption) {
   caption->GetCaptionTextProperty()->SetColor(0.9, 0.9, 0.9);
@@ -51,8 +39,27 @@ TunnelScene::TunnelScene() {
   actors_[idx(Layer::Traversable)] = make_actor(&kTraversableRed, 1.0, 1.0, true);
   actors_[idx(Layer::Forbidden)] = make_actor(&kForbiddenAmber, 1.0, 1.0, true);
   actors_[idx(Layer::Frustum)] = make_actor(&kFrustumGrey, 1.0, 2.0, true);
+  actors_[idx(Layer::Grid)] = make_actor(&kGridGrey, 1.0, 1.5, true);
   for (auto& a : actors_)
     if (a) renderer_->AddActor(a);
+  // Zones are translucent fills: the wall's points stay visible through them.
+  for (Layer zones : {Layer::Traversable, Layer::Forbidden})
+    actors_[idx(zones)]->GetProperty()->SetOpacity(kZoneFillOpacity);
+  add_zone_outlines();
+  grid_labels_ = add_labels(kLegendText, 16);
+  dimension_labels_ = add_labels(kLegendText, 18);
+  measurement_label_ = add_labels(kMeasureWhite, 18);
+  measurement_actor_ = make_actor(&kMeasureWhite, 9.0, 3.0, true);
+  // Always in front: a measurement is read, not hidden by the surface it lies on.
+  measurement_actor_->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(0, -66000);
+  measurement_actor_->GetMapper()->SetRelativeCoincidentTopologyPointOffsetParameter(-66000);
+  measurement_actor_->GetProperty()->RenderPointsAsSpheresOn();
+  renderer_->AddActor(measurement_actor_);
+  actors_[idx(Layer::Grid)]->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -20.0);
+  // A key, fill and back light: a mesh seen at a grazing angle stays readable (lit layers only;
+  // points, zones and lines are drawn unlit in their exact colours).
+  auto kit = vtkSmartPointer<vtkLightKit>::New();
+  kit->AddLightsToRenderer(renderer_);
   // VTK pushes polygons back by a slope-scaled offset (factor 2) so that lines win over them;
   // seen at a grazing angle along a wall that offset reaches centimetres and the wall's own
   // points would hide its zones. Cancel it and pull zones slightly forward instead.
@@ -82,8 +89,56 @@ TunnelScene::TunnelScene() {
   color_axis_label(axes_->GetZAxisCaptionActor2D());
   renderer_->AddActor(axes_);
 
-  build_legend();
+  legend_ = std::make_unique<SceneLegend>(renderer_);
+  // The legend's box is sized in pixels: refit it to the viewport before every render.
+  auto fit = vtkSmartPointer<vtkCallbackCommand>::New();
+  fit->SetClientData(this);
+  fit->SetCallback([](vtkObject* caller, unsigned long, void* self, void*) {
+    auto* renderer = static_cast<vtkRenderer*>(caller);
+    const int* size = renderer->GetSize();
+    static_cast<TunnelScene*>(self)->legend_->fit(size[0], size[1]);
+  });
+  fit_observer_ = renderer_->AddObserver(vtkCommand::StartEvent, fit);
   clear();
+  refresh_visibility();
+}
+
+TunnelScene::~TunnelScene() { renderer_->RemoveObserver(fit_observer_); }
+
+void TunnelScene::add_zone_outlines() {
+  auto outline = [&](Layer zones, const Rgb& color) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputDataObject(actors_[idx(zones)]->GetMapper()->GetInputDataObject(0, 0));
+    mapper->ScalarVisibilityOff();
+    mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-3.0, -6.0);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    vtkProperty* prop = actor->GetProperty();
+    prop->SetRepresentationToWireframe();  // a quad's wireframe is its outline
+    prop->SetColor(color[0], color[1], color[2]);
+    prop->SetLineWidth(2.5f);  // pixels, whatever the distance
+    prop->LightingOff();
+    renderer_->AddActor(actor);
+    return actor;
+  };
+  traversable_outline_ = outline(Layer::Traversable, kTraversableRed);
+  forbidden_outline_ = outline(Layer::Forbidden, kForbiddenAmber);
+}
+
+vtkSmartPointer<vtkActor2D> TunnelScene::add_labels(const Rgb& color, int font_size) {
+  auto mapper = vtkSmartPointer<vtkLabeledDataMapper>::New();
+  mapper->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
+  mapper->SetLabelModeToLabelFieldData();
+  mapper->SetFieldDataName("label");
+  vtkTextProperty* text = mapper->GetLabelTextProperty();
+  text->SetColor(color[0], color[1], color[2]);
+  text->SetFontSize(font_size);  // pixels: the same size at any distance
+  text->ShadowOn();              // readable over the wall's points
+  text->BoldOn();
+  auto actor = vtkSmartPointer<vtkActor2D>::New();
+  actor->SetMapper(mapper);
+  renderer_->AddActor2D(actor);
+  return actor;
 }
 
 vtkSmartPointer<vtkActor> TunnelScene::make_actor(const Rgb* color, double point_size,
@@ -106,50 +161,37 @@ vtkSmartPointer<vtkActor> TunnelScene::make_actor(const Rgb* color, double point
   return actor;
 }
 
-void TunnelScene::build_legend() {
-  legend_ = vtkSmartPointer<vtkLegendBoxActor>::New();
-  auto symbol = square_symbol();
-  struct Entry {
-    const char* text;
-    Rgb color;
-  };
-  std::vector<Entry> entries;
-  for (WallClass c : {WallClass::Left, WallClass::Right, WallClass::Top, WallClass::Bottom,
-                      WallClass::Unassigned})
-    entries.push_back({wall_class_label(c), wall_class_color(c)});
-  entries.push_back({"boundary", kBoundaryBlue});
-  entries.push_back({"traversable", kTraversableRed});
-  entries.push_back({"forbidden", kForbiddenAmber});
-  legend_->SetNumberOfEntries(static_cast<int>(entries.size()));
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    double c[3] = {entries[i].color[0], entries[i].color[1], entries[i].color[2]};
-    // Leading spaces: the swatch is drawn over the start of the entry's text box.
-    legend_->SetEntry(static_cast<int>(i), symbol, (std::string("  ") + entries[i].text).c_str(), c);
+std::optional<Eigen::Vector3d> TunnelScene::pick_at(double x, double y) {
+  const auto p = pick_point(renderer_, x, y);
+  if (p) {
+    Measurement m = measurement_;
+    m.add(*p);
+    set_measurement(m);
   }
-  legend_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-  legend_->GetPositionCoordinate()->SetValue(0.84, 0.02);
-  legend_->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
-  legend_->GetPosition2Coordinate()->SetValue(0.15, 0.32);
-  legend_->UseBackgroundOff();  // see set_legend_background()
-  legend_->GetEntryTextProperty()->SetColor(0.95, 0.95, 0.95);
-  legend_->GetEntryTextProperty()->ShadowOff();
-  renderer_->AddViewProp(legend_);
+  return p;
 }
 
-void TunnelScene::set_legend_background(bool on) {
-  legend_->SetUseBackground(on);
-  legend_->SetBackgroundColor(kBackground[0], kBackground[1], kBackground[2]);
-  legend_->SetBackgroundOpacity(0.9);
+void TunnelScene::set_measurement(const Measurement& m) {
+  measurement_ = m;
+  measurement_actor_->GetMapper()->SetInputDataObject(measurement_polydata(m));
+  measurement_label_->GetMapper()->SetInputDataObject(measurement_label(m));
 }
+
+void TunnelScene::set_legend_background(bool on) { legend_->set_background(on); }
 
 void TunnelScene::set_input(Layer layer, vtkPolyData* poly) {
   auto& actor = actors_[idx(layer)];
   actor->GetMapper()->SetInputDataObject(poly);
+  if (layer == Layer::Traversable) traversable_outline_->GetMapper()->SetInputDataObject(poly);
+  if (layer == Layer::Forbidden) forbidden_outline_->GetMapper()->SetInputDataObject(poly);
 }
 
 void TunnelScene::clear() {
-  for (auto& a : actors_)
-    if (a) a->GetMapper()->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
+  for (Layer l : all_layers())
+    if (actors_[idx(l)]) set_input(l, vtkSmartPointer<vtkPolyData>::New());
+  grid_labels_->GetMapper()->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
+  dimension_labels_->GetMapper()->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
+  set_measurement(Measurement());
   map_ = TunnelMap();
 }
 
@@ -167,6 +209,11 @@ void TunnelScene::set_geometry(const SceneGeometry& g) {
   set_input(Layer::Traversable, g.traversable);
   set_input(Layer::Forbidden, g.forbidden);
   set_input(Layer::Frustum, g.frustum);
+  set_input(Layer::Grid, g.grid ? g.grid.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
+  grid_labels_->GetMapper()->SetInputDataObject(g.grid_labels ? g.grid_labels.Get()
+                                                              : vtkSmartPointer<vtkPolyData>::New().Get());
+  dimension_labels_->GetMapper()->SetInputDataObject(
+      g.dimension_labels ? g.dimension_labels.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
   if (g.mesh) set_mesh(g.mesh);
   map_ = g.map;
   // Decimated point layers draw larger points so surfaces stay closed on screen.
@@ -180,16 +227,38 @@ void TunnelScene::set_mesh(vtkPolyData* mesh) {
   set_input(Layer::Mesh, poly);
   // A mesh that carries colours shows them; otherwise a neutral grey.
   actors_[idx(Layer::Mesh)]->GetMapper()->SetScalarVisibility(poly->GetPointData()->GetScalars() != nullptr);
+  // Some ambient light: faces turned from every light do not go black.
+  actors_[idx(Layer::Mesh)]->GetProperty()->SetAmbient(0.35);
+  actors_[idx(Layer::Mesh)]->GetProperty()->SetDiffuse(0.75);
 }
 
 void TunnelScene::set_layer_visible(Layer layer, bool visible) {
   visible_[idx(layer)] = visible;
-  if (layer == Layer::Axes)
-    axes_->SetVisibility(visible);
-  else if (layer == Layer::Legend)
-    legend_->SetVisibility(visible);
-  else
-    actors_[idx(layer)]->SetVisibility(visible);
+  refresh_visibility();
+}
+
+bool TunnelScene::layer_shown(Layer layer) const {
+  if ((layer == Layer::Frustum || layer == Layer::Axes) && view_ == ViewPreset::Along) return false;
+  return visible_[idx(layer)];
+}
+
+void TunnelScene::refresh_visibility() {
+  for (Layer l : all_layers())
+    if (actors_[idx(l)]) actors_[idx(l)]->SetVisibility(layer_shown(l));
+  traversable_outline_->SetVisibility(layer_shown(Layer::Traversable));
+  forbidden_outline_->SetVisibility(layer_shown(Layer::Forbidden));
+  grid_labels_->SetVisibility(layer_shown(Layer::Grid));
+  dimension_labels_->SetVisibility(layer_shown(Layer::Boundary));
+  axes_->SetVisibility(layer_shown(Layer::Axes));
+  legend_->set_visible(layer_shown(Layer::Legend));
+  legend_->set_layers({layer_shown(Layer::Planes), layer_shown(Layer::Boundary), layer_shown(Layer::Traversable),
+                       layer_shown(Layer::Forbidden)});
+}
+
+void TunnelScene::apply_view(ViewPreset view) {
+  view_ = view;
+  refresh_visibility();
+  scene::apply_view(renderer_, view, map_);
 }
 
 void TunnelScene::show_only(const std::vector<Layer>& layers) {

@@ -3,26 +3,32 @@
 // that the caller adds to any render window: the Qt widget in the GUI, an OSMesa-backed window
 // in tunnelmap-render. No Qt here, so both executables share exactly this code.
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <vtkActor.h>
-#include <vtkLegendBoxActor.h>
+#include <vtkActor2D.h>
 #include <vtkAxesActor.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
 #include "ui/scene/camera_presets.h"
 #include "ui/scene/image_checks.h"
+#include "ui/scene/measurement.h"
 #include "ui/scene/scene_colors.h"
 #include "ui/scene/scene_data.h"
 #include "ui/scene/scene_geometry.h"
 #include "ui/scene/scene_layers.h"
+#include "ui/scene/scene_legend.h"
 
 namespace tunnelmap::scene {
 
 class TunnelScene {
  public:
   TunnelScene();
+  ~TunnelScene();
+  TunnelScene(const TunnelScene&) = delete;  // the renderer's observer points at this object
+  TunnelScene& operator=(const TunnelScene&) = delete;
 
   vtkRenderer* renderer() const { return renderer_; }
 
@@ -45,9 +51,21 @@ class TunnelScene {
 
   void set_layer_visible(Layer layer, bool visible);
   bool layer_visible(Layer layer) const { return visible_[static_cast<int>(layer)]; }
+  // Visible and drawn in the current view: the frustum and the axes sit at the camera, so the
+  // along view (from the camera) hides them whatever their toggles say.
+  bool layer_shown(Layer layer) const;
   void show_only(const std::vector<Layer>& layers);
 
-  void apply_view(ViewPreset view) { scene::apply_view(renderer_, view, map_); }
+  void apply_view(ViewPreset view);
+  ViewPreset view() const { return view_; }
+
+  const SceneLegend& legend() const { return *legend_; }
+
+  // Measurement: pick_at() picks the surface drawn under display (x, y) (origin bottom-left; the
+  // scene must have been rendered) and adds it to the measurement, drawn in white.
+  std::optional<Eigen::Vector3d> pick_at(double x, double y);
+  const Measurement& measurement() const { return measurement_; }
+  void set_measurement(const Measurement& m);
 
   // Number of points / cells currently in a polydata layer (for tests and the status bar).
   vtkIdType layer_size(Layer layer) const;
@@ -62,13 +80,24 @@ class TunnelScene {
   vtkSmartPointer<vtkActor> make_actor(const Rgb* color, double point_size, double line_width,
                                        bool unlit);
   void set_input(Layer layer, vtkPolyData* poly);
-  void build_legend();
+  void add_zone_outlines();
+  vtkSmartPointer<vtkActor2D> add_labels(const Rgb& color, int font_size);
+  void refresh_visibility();
 
   vtkSmartPointer<vtkRenderer> renderer_;
   std::array<vtkSmartPointer<vtkActor>, kLayerCount> actors_;  // null for axes/legend
+  // Opaque outlines of constant screen width over the translucent zone fills.
+  vtkSmartPointer<vtkActor> traversable_outline_, forbidden_outline_;
+  vtkSmartPointer<vtkActor2D> grid_labels_;       // distances on the floor (Grid layer)
+  vtkSmartPointer<vtkActor2D> dimension_labels_;  // width and height (Boundary layer)
+  vtkSmartPointer<vtkActor> measurement_actor_;
+  vtkSmartPointer<vtkActor2D> measurement_label_;
+  Measurement measurement_;
   vtkSmartPointer<vtkAxesActor> axes_;
-  vtkSmartPointer<vtkLegendBoxActor> legend_;
+  std::unique_ptr<SceneLegend> legend_;
+  unsigned long fit_observer_ = 0;
   std::array<bool, kLayerCount> visible_;
+  ViewPreset view_ = ViewPreset::Reset;
   TunnelMap map_;  // copy of the last map, for the camera presets
   int max_points_ = kDefaultDisplayPoints;
 };

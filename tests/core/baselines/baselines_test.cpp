@@ -143,12 +143,12 @@ TEST(QhullTunnel, TooFewPointsAndTemplateWindowAreReported) {
   OrganizedCloud cloud = cloud_of(f.frame);
   QhullOptions o;
   o.min_points = static_cast<int>(cloud.points.size()) + 1;
-  EXPECT_EQ(qhull_tunnel(cloud, camera_up(f.frame), TunnelOptions(), nullptr, o).map.status, "too_few_points");
+  EXPECT_EQ(qhull_tunnel(cloud, camera_up(f.frame), TunnelOptions(), nullptr, o).map.status, TunnelStatus::TooFewPoints);
   TunnelOptions narrow;
   narrow.width_max_m = 0.5;
   const QhullTunnelResult r = qhull_tunnel(cloud, camera_up(f.frame), narrow, nullptr);
   EXPECT_FALSE(r.map.detected);
-  EXPECT_EQ(r.map.status, "out_of_template");
+  EXPECT_EQ(r.map.status, TunnelStatus::OutOfTemplate);
   EXPECT_THROW(qhull_tunnel(cloud, Eigen::Vector3d::Zero(), TunnelOptions(), nullptr), ParameterError);
 }
 

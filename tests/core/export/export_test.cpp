@@ -36,7 +36,7 @@ std::array<Eigen::Vector3d, 4> rect(const Eigen::Vector3d& p0, const Eigen::Vect
 TunnelMap hand_built_map() {
   TunnelMap m;
   m.detected = true;
-  m.status = "ok";
+  m.status = TunnelStatus::Ok;
   m.width_m = 0.82;
   m.height_m = 1.30;
   const double hw = 0.41, hh = 0.65, z0 = 0.5, len = 2.0, band = 0.15;
@@ -236,7 +236,7 @@ TEST(MapPly, EmptyMapStillWritesAValidFile) {
   IoTempDir tmp;
   const std::string path = tmp.file("empty.ply");
   TunnelMap none;
-  none.status = "too_few_planes";
+  none.status = TunnelStatus::TooFewPlanes;
   write_map_ply(path, none, nlohmann::json::object());
   const PlyFile f = split_ply(path);
   EXPECT_TRUE(has_line(f, "element vertex 0"));

@@ -188,7 +188,7 @@ TEST_F(SimSequence, SagDegradesTheMeshButNotPerFrameDetection) {
 TEST(MultiScanMap, PoseWithoutDetectionAsksToMoveAndRescan) {
   TunnelMap ok;
   ok.detected = true;
-  ok.status = "ok";
+  ok.status = TunnelStatus::Ok;
   ok.width_m = 0.8;
   ok.height_m = 1.2;
   ok.axis_dir = Eigen::Vector3d::UnitZ();  // camera frame: looking along the tunnel
@@ -196,7 +196,7 @@ TEST(MultiScanMap, PoseWithoutDetectionAsksToMoveAndRescan) {
   ok.extent_min_m = 0.5;
   ok.extent_max_m = 2.0;
   TunnelMap bad;
-  bad.status = "too_few_planes";
+  bad.status = TunnelStatus::TooFewPlanes;
   bad.reason = "2 planes detected, at least 4 needed";
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;  // camera z -> world x, camera y -> world -z

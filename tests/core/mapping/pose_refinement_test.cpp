@@ -59,7 +59,7 @@ SyntheticFrame observe(const Eigen::Isometry3d& T, double x0, double x1, const b
   SyntheticFrame f;
   const Eigen::Isometry3d inv = T.inverse();
   f.map.detected = true;
-  f.map.status = "ok";
+  f.map.status = TunnelStatus::Ok;
   f.map.axis_dir = inv.linear() * Eigen::Vector3d::UnitX();
   f.map.up = inv.linear() * Eigen::Vector3d::UnitZ();
   const Eigen::Vector3d inward[4] = {-Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY(),

@@ -109,7 +109,7 @@ TEST(Integration, OneFlatWallIsNoTunnel) {
   const FrameResult r = pipeline.run(s.frame);
   EXPECT_GE(r.planes.planes.size(), 1u);
   EXPECT_FALSE(r.map.detected);
-  EXPECT_NE(r.map.status, "ok");
+  EXPECT_NE(r.map.status, TunnelStatus::Ok);
 }
 
 TEST(Integration, EveryStageReportsItsTime) {

@@ -28,7 +28,8 @@ const std::string kField = " --params " + kPresets + "field.json";
 
 struct FrameOutcome {
   bool detected = false;
-  std::string status, reason;
+  TunnelStatus status = TunnelStatus::NotRun;
+  std::string reason;
   double width_m = NAN, height_m = NAN;  // NaN unless measured in the frame
 };
 
@@ -44,7 +45,7 @@ std::vector<FrameOutcome> detect(const std::string& input_and_options) {
   for (const auto& f : j["frames"]) {
     FrameOutcome o;
     o.detected = f["detected"].get<bool>();
-    o.status = f["status"].get<std::string>();
+    o.status = f["status"].get<TunnelStatus>();
     o.reason = f["reason"].get<std::string>();
     if (o.detected && f["width_source"] == "measured") o.width_m = f["width_m"].get<double>();
     if (o.detected && f["height_source"] == "measured") o.height_m = f["height_m"].get<double>();
@@ -76,7 +77,7 @@ std::string simulate_corridor(const IoTempDir& tmp, double width_m) {
 void expect_every_frame_measured(const std::vector<FrameOutcome>& frames, double width_m) {
   ASSERT_EQ(frames.size(), 3u);
   for (const FrameOutcome& f : frames) {
-    EXPECT_EQ(f.status, "ok") << f.reason;
+    EXPECT_EQ(f.status, TunnelStatus::Ok) << f.reason;
     EXPECT_NEAR(f.width_m, width_m, 0.030) << f.reason;
     EXPECT_NEAR(f.height_m, 2.4, 0.030) << f.reason;
   }
@@ -85,7 +86,7 @@ void expect_every_frame_measured(const std::vector<FrameOutcome>& frames, double
 // The box-girder presets narrow the template prior to ~1 m: a corridor is out of it.
 void expect_box_girder_presets_refuse(const std::string& dir) {
   for (const std::string& preset : {kLab, kField})
-    for (const FrameOutcome& f : detect(dir + preset)) EXPECT_EQ(f.status, "out_of_template") << f.reason;
+    for (const FrameOutcome& f : detect(dir + preset)) EXPECT_EQ(f.status, TunnelStatus::OutOfTemplate) << f.reason;
 }
 
 TEST(CorridorPreset, SimulatedCorridor2mWideEveryFrameWithin30mm) {
@@ -110,7 +111,7 @@ TEST(CorridorPreset, SimulatedCorridor4mWideEveryFrameWithin30mmWhereTheDefaults
   expect_every_frame_measured(detect(dir + kCorridor), 4.0);
   // The defaults' 40 mm candidate distance breaks the walls 3.6-5 m ahead into small planes with
   // scattered normals: left and right come out 13-16 deg from parallel.
-  for (const FrameOutcome& f : detect(dir)) EXPECT_EQ(f.status, "no_parallel_pair") << f.reason;
+  for (const FrameOutcome& f : detect(dir)) EXPECT_EQ(f.status, TunnelStatus::NoParallelPair) << f.reason;
   expect_box_girder_presets_refuse(dir);
 }
 
@@ -147,7 +148,7 @@ TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
     int k = 0;
     for (const Pipeline* p : {&with, &without}) {
       p->run(frame, r);
-      ASSERT_EQ(r.map.status, "ok") << i << ": " << r.map.reason;
+      ASSERT_EQ(r.map.status, TunnelStatus::Ok) << i << ": " << r.map.reason;
       if (p == &with) {
         for (const Wall& w : r.map.walls) EXPECT_EQ(w.clusters.size(), 1u) << i;
       }
@@ -199,20 +200,20 @@ TEST(CorridorPreset, RealFramesGiveAPlausibleMapOrOneReason) {
   // Cape: a vaulted pedestrian tunnel seen as its left wall and floor only.
   auto f = detect(real(kCape) + kCorridor);
   ASSERT_EQ(f.size(), 1u);
-  EXPECT_EQ(f[0].status, "missing_wall");
+  EXPECT_EQ(f[0].status, TunnelStatus::MissingWall);
   EXPECT_EQ(f[0].reason, "neither the width nor the height was measured (walls seen: left bottom)");
   // PCL office: side walls 1.40 and 1.88 m away (the right one at a recess, by the image a
   // doorway, 0.27 m behind its main face), floor 1.32 m below, a soffit (door head) 0.83 m
   // above: 3.28 x 2.15 m, a room-sized box.
   f = detect(real(kOffice) + kCorridor);
   ASSERT_EQ(f.size(), 1u);
-  EXPECT_EQ(f[0].status, "ok") << f[0].reason;
+  EXPECT_EQ(f[0].status, TunnelStatus::Ok) << f[0].reason;
   EXPECT_NEAR(f[0].width_m, 3.28, 0.10);
   EXPECT_NEAR(f[0].height_m, 2.15, 0.10);
   // RTAB-Map lab: a wall facing the camera, the floor and a side wall.
   f = detect(real(kRtabmap) + kCorridor);
   ASSERT_EQ(f.size(), 1u);
-  EXPECT_EQ(f[0].status, "missing_wall");
+  EXPECT_EQ(f[0].status, TunnelStatus::MissingWall);
   EXPECT_EQ(f[0].reason.rfind("neither the width nor the height was measured", 0), 0u) << f[0].reason;
 
   for (const RealFrame* frame : {&kCape, &kOffice, &kRtabmap})

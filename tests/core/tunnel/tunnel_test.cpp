@@ -154,7 +154,7 @@ TEST(TunnelDetector, MeasuresWidthAndHeightOfTheOutermostZones) {
   const Scene s = SceneBuilder(SceneSpec()).build();
   const TunnelMap m = detect(s);
   ASSERT_TRUE(m.detected) << m.status << ": " << m.reason;
-  EXPECT_EQ(m.status, "ok");
+  EXPECT_EQ(m.status, TunnelStatus::Ok);
   EXPECT_NEAR(m.width_m, kW, 0.001);
   EXPECT_NEAR(m.height_m, kH, 0.001);
   EXPECT_EQ(m.timings_ms.count("tunnel"), 1u);
@@ -274,7 +274,7 @@ TEST(TunnelDetector, TooFewPlanes) {
   s.planes.planes.resize(1);
   const TunnelMap m = detect(s);
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "too_few_planes");
+  EXPECT_EQ(m.status, TunnelStatus::TooFewPlanes);
   EXPECT_NE(m.reason.find("1 planes"), std::string::npos) << m.reason;
   EXPECT_EQ(m.plane_classes.size(), 1u);
   EXPECT_EQ(m.plane_outlier.size(), 1u);
@@ -288,7 +288,7 @@ TEST(TunnelDetector, OneFlatWallIsNotATunnel) {
   ASSERT_EQ(s.planes.planes.size(), 24u);
   const TunnelMap m = detect(s);
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "missing_wall");
+  EXPECT_EQ(m.status, TunnelStatus::MissingWall);
   for (const char* w : {"right wall: 0 planes", "top wall: 0 planes", "bottom wall: 0 planes"})
     EXPECT_NE(m.reason.find(w), std::string::npos) << m.reason;
   EXPECT_EQ(m.reason.find("left"), std::string::npos) << m.reason;
@@ -299,7 +299,7 @@ TEST(TunnelDetector, MissingTopGivesAPartialMapWithTheWidthMeasured) {
   spec.with[static_cast<int>(WallClass::Top)] = false;
   const TunnelMap m = detect(SceneBuilder(spec).build());
   ASSERT_TRUE(m.detected) << m.reason;
-  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.status, TunnelStatus::Partial);
   EXPECT_EQ(m.reason, "height unknown");
   EXPECT_EQ(m.width_source, DimensionSource::Measured);
   EXPECT_EQ(m.height_source, DimensionSource::Unseen);
@@ -317,7 +317,7 @@ TEST(TunnelDetector, MissingTopWithADesignInfersTheRoofFromTheFloor) {
   o.design_height_m = 1.25;
   const TunnelMap m = detect(SceneBuilder(spec).build(), o);
   ASSERT_TRUE(m.detected) << m.reason;
-  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.status, TunnelStatus::Partial);
   EXPECT_EQ(m.reason, "height from design");
   EXPECT_EQ(m.height_source, DimensionSource::Design);
   EXPECT_DOUBLE_EQ(m.height_m, 1.25);
@@ -334,7 +334,7 @@ TEST(TunnelDetector, TwoAdjacentWallsMeasureNothingWithoutADesign) {
   spec.with[static_cast<int>(WallClass::Right)] = false;
   const TunnelMap m = detect(SceneBuilder(spec).build());
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "missing_wall");
+  EXPECT_EQ(m.status, TunnelStatus::MissingWall);
   EXPECT_NE(m.reason.find("neither the width nor the height"), std::string::npos) << m.reason;
 }
 
@@ -343,13 +343,13 @@ TEST(TunnelDetector, OutOfTemplateWhenThePriorIsNarrowed) {
   o.width_max_m = 0.70;
   const TunnelMap m = detect(SceneBuilder(SceneSpec()).build(), o);
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "out_of_template");
+  EXPECT_EQ(m.status, TunnelStatus::OutOfTemplate);
   EXPECT_EQ(m.reason, "width 0.820 m outside [0.30, 0.70]");
   EXPECT_NEAR(m.width_m, kW, 0.001);  // still reported for inspection
   o = fine_options();
   o.height_min_m = 1.5;
   const TunnelMap h = detect(SceneBuilder(SceneSpec()).build(), o);
-  EXPECT_EQ(h.status, "out_of_template");
+  EXPECT_EQ(h.status, TunnelStatus::OutOfTemplate);
   EXPECT_NE(h.reason.find("height 1.300 m outside [1.50, 3.00]"), std::string::npos) << h.reason;
 }
 
@@ -364,7 +364,7 @@ TEST(TunnelDetector, ContextOfEarlierScans) {
   far.accept(prior);
   const TunnelMap bad = detect(s, fine_options(), &far);
   EXPECT_FALSE(bad.detected);
-  EXPECT_EQ(bad.status, "inconsistent_with_context");
+  EXPECT_EQ(bad.status, TunnelStatus::InconsistentWithContext);
   EXPECT_NE(bad.reason.find("width 0.820 m differs from the context's 0.900 m by more than 40 mm"),
             std::string::npos) << bad.reason;
   TunnelContext near;
@@ -433,7 +433,7 @@ TEST(TunnelDetector, NonPerpendicularPairs) {
   spec.tilt_top_bottom_deg = 20;  // roof and floor parallel to each other, 70 deg to the walls
   const TunnelMap m = detect(SceneBuilder(spec).build());
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "not_rectangular");
+  EXPECT_EQ(m.status, TunnelStatus::NotRectangular);
   EXPECT_NE(m.reason.find("20.0 deg from perpendicular"), std::string::npos) << m.reason;
 }
 
@@ -442,7 +442,7 @@ TEST(TunnelDetector, NoParallelPair) {
   spec.tilt_left_deg = 20;
   const TunnelMap m = detect(SceneBuilder(spec).build());
   EXPECT_FALSE(m.detected);
-  EXPECT_EQ(m.status, "no_parallel_pair");
+  EXPECT_EQ(m.status, TunnelStatus::NoParallelPair);
   EXPECT_NE(m.reason.find("left and right walls are 20.0 deg"), std::string::npos) << m.reason;
 }
 
@@ -633,10 +633,10 @@ TEST(TunnelDetector, FrameAThenOthersThenAGivesTheFirstResultForA) {
     detect_tunnel(a.planes, a.up_cam, fine_options(), nullptr, map);
     expect_same_map(map, first);
   }
-  EXPECT_EQ(first.status, "ok");
-  EXPECT_EQ(detect(b).status, "partial");
+  EXPECT_EQ(first.status, TunnelStatus::Ok);
+  EXPECT_EQ(detect(b).status, TunnelStatus::Partial);
   EXPECT_TRUE(detect(c).detected);
-  EXPECT_EQ(detect(d).status, "too_few_planes");
+  EXPECT_EQ(detect(d).status, TunnelStatus::TooFewPlanes);
 }
 
 
@@ -758,17 +758,17 @@ TEST(TunnelDetector, ScaledZoneSupportAndGapMeasureFarWallsOfFewPoints) {
   o.width_max_m = 7.0;
   // Fixed support and gap: each side wall is three 60-point zones, none with 300 points.
   TunnelMap m = detect_tunnel(planes, up, o, nullptr);
-  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.status, TunnelStatus::Partial);
   EXPECT_FALSE(m.wall(WallClass::Left).found);
   EXPECT_NEAR(m.height_m, 2.4, 1e-9);
   // Scaled support alone: 75 points at 2 m, still three zones of 60.
   o.zone_support_ref_m = 1.0;
   m = detect_tunnel(planes, up, o, nullptr);
-  EXPECT_EQ(m.status, "partial");
+  EXPECT_EQ(m.status, TunnelStatus::Partial);
   // With the gap scaled too (40 mm at 2 m) each wall is one zone of 180 points.
   o.zone_gap_ref_m = 1.0;
   m = detect_tunnel(planes, up, o, nullptr);
-  ASSERT_EQ(m.status, "ok") << m.reason;
+  ASSERT_EQ(m.status, TunnelStatus::Ok) << m.reason;
   EXPECT_EQ(m.wall(WallClass::Left).clusters.size(), 1u);
   EXPECT_EQ(m.wall(WallClass::Left).clusters[0].points, 180);
   EXPECT_NEAR(m.width_m, 4.0, 1e-9);
@@ -780,7 +780,7 @@ TEST(TunnelDetector, AFarWallWithoutEnoughScaledSupportSaysWhatItNeeded) {
   o.width_max_m = 7.0;
   o.zone_support_ref_m = 1.0;  // gap fixed: 60-point zones at 1.98, 2.00 and 2.02 m
   const TunnelMap m = detect_tunnel(far_walled_corridor(false), -Eigen::Vector3d::UnitY(), o, nullptr);
-  EXPECT_EQ(m.status, "missing_wall");
+  EXPECT_EQ(m.status, TunnelStatus::MissingWall);
   // 300 * (1 / 2.02)^2 = 73.5 points needed at the outermost (first of the equal) zones.
   for (const char* wall : {"left", "right"})
     EXPECT_NE(m.reason.find(std::string(wall) +

@@ -1,0 +1,72 @@
+#include "bench/timed_runs.h"
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "bench/bench_frames.h"
+#include "bench/opencv_peer.h"
+#include "bench/pcl_peer.h"
+#include "core/pipeline/pipeline.h"
+
+namespace tunnelmap::bench {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+template <class Run>
+void time_runs(const std::string& frame, const char* method, int reps, int warmup, Run run) {
+  std::vector<double> ms;
+  ms.reserve(reps);
+  int planes = 0;
+  for (int i = 0; i < warmup + reps; ++i) {
+    const auto t0 = Clock::now();
+    planes = run();
+    const double t = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    if (i >= warmup) ms.push_back(t);
+  }
+  std::printf("RAW|%s|%s|%d|", frame.c_str(), method, planes);
+  for (const double t : ms) std::printf("%.4f ", t);
+  std::printf("\n");
+}
+}  // namespace
+
+int print_timed_runs(int reps, int warmup) {
+  const Parameters p;
+  const CloudOptions co = cloud_options(p);
+  const NormalOptions no = normal_options(p);
+  const GrowOptions go = grow_options(p);
+  for (const NamedFrame& nf : bench_frames()) {
+    // The paper's plane extraction from the depth image: cloud + normals + PG&C + areas +
+    // contours (BM_PlaneExtraction).
+    OrganizedCloud cloud;
+    PlaneSegments planes;
+    FrameScratch scratch;  // reused across runs, as Pipeline::run does
+    time_runs(nf.name, "tunnelmap", reps, warmup, [&] {
+      build_cloud(nf.frame, co, cloud, scratch.cloud);
+      estimate_normals(no, cloud, scratch.normals);
+      extract_planes(cloud, go, planes, scratch.planes);
+      return static_cast<int>(planes.planes.size());
+    });
+    // BM_OpenCvTotalWithCloud_FALS: depthTo3d + RgbdNormals + RgbdPlane (tuned settings).
+    OpenCvPeer cv_peer(nf.frame, co, tuned_opencv_settings(CvNormalsMethod::Fals));
+    time_runs(nf.name, "opencv", reps, warmup, [&] {
+      cv_peer.depth_to_3d();
+      cv_peer.estimate_normals();
+      cv_peer.find_planes();
+      return cv_peer.plane_count();
+    });
+    // BM_PclTotal: IINE + OMPS from the organised cloud (PCL has no depth-to-cloud step).
+    PclPeer pcl_peer(tuned_pcl_settings());
+    pcl_peer.set_cloud(cloud);
+    time_runs(nf.name, "pcl", reps, warmup, [&] {
+      pcl_peer.estimate_normals();
+      pcl_peer.segment();
+      return pcl_peer.plane_count();
+    });
+  }
+  return 0;
+}
+
+}  // namespace tunnelmap::bench

@@ -1,0 +1,60 @@
+#include "core/mapping/dataset_mapping.h"
+
+#include <chrono>
+
+#include "core/kinematics/frame_pose.h"
+#include "core/mapping/frame_walls.h"
+#include "core/util/error.h"
+
+namespace tunnelmap {
+
+std::vector<Eigen::Isometry3d> dataset_poses(const Dataset& ds) {
+  std::vector<Eigen::Isometry3d> poses;
+  poses.reserve(ds.frames.size());
+  for (std::size_t i = 0; i < ds.frames.size(); ++i) {
+    const ResolvedPose rp = resolve_frame_pose(ds, i);
+    if (!rp.pose)
+      throw InputError(ds.json_path, "frames[" + std::to_string(i) +
+                                         "] has neither \"pose\" nor \"joints\": the map needs "
+                                         "every camera pose");
+    poses.push_back(*rp.pose);
+  }
+  return poses;
+}
+
+DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_poses,
+                           const std::function<void(std::size_t)>& progress) {
+  const std::size_t n = ds.frames.size();
+  if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
+  const std::vector<Eigen::Isometry3d> poses = dataset_poses(ds);
+  pipeline.set_world_up(ds.up);
+
+  DatasetMapping out;
+  out.maps.resize(n);
+  out.sources.resize(n);
+  out.plane_counts.resize(n);
+  out.timings.resize(n);
+  std::vector<FrameWalls> walls(n);
+  double extract_ms = 0.0;
+  FrameResult result;
+  for (std::size_t k = 0; k < n; ++k) {
+    DepthFrame f = ds.load_frame(k);
+    f.pose = poses[k];  // the world frame for up
+    pipeline.run(f, result);
+    out.detect_ms += result.timings_ms.at("total");
+    const auto t_extract = std::chrono::steady_clock::now();
+    extract_frame_walls(result, walls[k]);
+    extract_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_extract).count();
+    out.maps[k] = result.map;
+    out.sources[k] = f.source;
+    out.plane_counts[k] = result.planes.planes.size();
+    out.timings[k] = result.timings_ms;
+    if (progress) progress(k + 1);
+  }
+  out.mapped = map_posed_sequence(out.maps, walls, poses, pipeline.params(), refine_poses);
+  out.map_ms = out.mapped.map_ms + extract_ms;
+  out.mapped.stations.timings_ms["map"] = out.map_ms;
+  return out;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,67 @@
+#pragma once
+// The station map's parameters (map.*), declared once, and the options StationMapBuilder takes
+// (which also read the tunnel's design, zone gap and symmetric step: core/tunnel/tunnel_options.h).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "core/params/parameter_key.h"
+#include "core/tunnel/tunnel_options.h"
+
+namespace tunnelmap {
+
+class Parameters;
+
+namespace map_keys {
+inline constexpr ParameterKey<double> station_step_m{
+    "map.station_step_m", "m", 0.10, 0.02, 2.0, 0.01, Stage::Map, "Station step",
+    "Distance between map stations along the tunnel axis"};
+inline constexpr ParameterKey<double> tolerance_mm{
+    "map.tolerance_mm", "mm", 10.0, 0.5, 500.0, 0.5, Stage::Map, "Design tolerance",
+    "A station whose width or height deviates from the design by more than this is out of tolerance"};
+inline constexpr ParameterKey<double> section_change_mm{
+    "map.section_change_mm", "mm", 12.0, 2.0, 500.0, 0.5, Stage::Map, "Section change",
+    "Stations whose width or height differs from the current section's by more than this, over at "
+    "least Section length stations, start a new section; shorter runs are outliers"};
+inline constexpr ParameterKey<double> min_section_m{
+    "map.min_section_m", "m", 0.3, 0.05, 10.0, 0.05, Stage::Map, "Section length",
+    "Shortest stretch of agreeing stations that makes a new section"};
+inline constexpr ParameterKey<int> min_station_points{
+    "map.min_station_points", "points", 60, 5, 100000, 5, Stage::Map, "Station support",
+    "Fewest wall points (over all frames) that measure a wall at one station"};
+}  // namespace map_keys
+
+// Whole stations in `length_m` (at least one).
+inline int stations_in(double length_m, double step_m) {
+  return std::max(1, static_cast<int>(std::lround(length_m / step_m)));
+}
+// A design dimension of the table (0 = none).
+inline std::optional<double> design_or_none(double m) {
+  return m > 0 ? std::optional<double>(m) : std::nullopt;
+}
+
+struct StationMapOptions {
+  double station_step_m = map_keys::station_step_m.default_value;
+  // The design cross-section, if known.
+  std::optional<double> design_width_m = design_or_none(tunnel_keys::design_width_m.default_value);
+  std::optional<double> design_height_m = design_or_none(tunnel_keys::design_height_m.default_value);
+  double tolerance_mm = map_keys::tolerance_mm.default_value;  // |deviation| above this is out of tolerance
+  // Stations differing by more than this start a new section.
+  double section_change_mm = map_keys::section_change_mm.default_value;
+  // A shorter run is an outlier, not a section.
+  int min_section_stations =
+      stations_in(map_keys::min_section_m.default_value, map_keys::station_step_m.default_value);
+  // Wall positions closer than this are one zone.
+  double zone_gap_m = mm_to_m(tunnel_keys::zone_cluster_mm.default_value);
+  double max_symmetric_step_m = mm_to_m(tunnel_keys::symmetric_step_max_mm.default_value);
+  // Fewest wall points a station needs to measure a wall.
+  int min_support_points = map_keys::min_station_points.default_value;
+};
+bool operator==(const StationMapOptions& a, const StationMapOptions& b);
+inline bool operator!=(const StationMapOptions& a, const StationMapOptions& b) { return !(a == b); }
+
+// The options the parameter table gives (map.*, tunnel.design_*, zone gap and symmetric step).
+StationMapOptions station_map_options(const Parameters& params);
+ParameterGroup map_parameter_group();  // table rows and rules, in table order
+
+}  // namespace tunnelmap

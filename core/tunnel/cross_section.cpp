@@ -1,0 +1,102 @@
+#include "core/tunnel/cross_section.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace tunnelmap {
+
+namespace {
+
+// +1 when the tunnel lies ahead along axis_dir, -1 when axis_dir points back at the camera.
+double ahead_sign(const TunnelMap& map) {
+  const double mid = map.axis_point.dot(map.axis_dir) + 0.5 * (map.extent_min_m + map.extent_max_m);
+  return mid >= 0 ? 1.0 : -1.0;
+}
+
+struct SectionFrame {
+  Eigen::Vector3d centre, axis, right, up;
+};
+
+SectionFrame frame_at(const TunnelMap& map, double station_m) {
+  SectionFrame f;
+  f.axis = map.axis_dir.normalized() * ahead_sign(map);
+  f.up = (map.up - map.up.dot(f.axis) * f.axis).normalized();
+  f.right = f.axis.cross(f.up);  // looking along the axis with the roof up
+  // The axis point at the station: its distance ahead of the camera is station_m.
+  f.centre = map.axis_point + f.axis * (station_m - map.axis_point.dot(f.axis));
+  return f;
+}
+
+// Where the wall's plane crosses the section's `dir` line through the centre (section coords).
+std::optional<double> wall_position(const Wall& w, const SectionFrame& f, const Eigen::Vector3d& dir) {
+  if (!w.found || !w.normal.allFinite()) return std::nullopt;
+  const double along = w.normal.dot(dir);
+  if (std::abs(along) < 0.3) return std::nullopt;  // a wall nearly parallel to that line
+  return -(w.normal.dot(f.centre) + w.offset_m) / along;
+}
+
+std::optional<SectionRect> fitted_rect(const TunnelMap& map, const SectionFrame& f) {
+  if (!map.detected) return std::nullopt;
+  auto l = wall_position(map.wall(WallClass::Left), f, f.right);
+  auto r = wall_position(map.wall(WallClass::Right), f, f.right);
+  auto b = wall_position(map.wall(WallClass::Bottom), f, f.up);
+  auto t = wall_position(map.wall(WallClass::Top), f, f.up);
+  // A wall out of view: placed from the other one and the size the map knows.
+  if (!l && r && map.has_width()) l = *r - map.width_m;
+  if (!r && l && map.has_width()) r = *l + map.width_m;
+  if (!b && t && map.has_height()) b = *t - map.height_m;
+  if (!t && b && map.has_height()) t = *b + map.height_m;
+  if (!l || !r || !b || !t) return std::nullopt;
+  SectionRect rect{std::min(*l, *r), std::max(*l, *r), std::min(*b, *t), std::max(*b, *t)};
+  return rect;
+}
+
+}  // namespace
+
+StationRange visible_stations(const TunnelMap& map) {
+  const double s = ahead_sign(map), base = map.axis_point.dot(map.axis_dir);
+  const double a = s * (base + map.extent_min_m), b = s * (base + map.extent_max_m);
+  return {std::max(0.0, std::min(a, b)), std::max(0.0, std::max(a, b))};
+}
+
+CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& planes, const TunnelMap& map,
+                           double station_m, double half_thickness_m, std::optional<double> design_width_m,
+                           std::optional<double> design_height_m, std::size_t max_points) {
+  CrossSection out;
+  out.station_m = station_m;
+  out.half_thickness_m = half_thickness_m;
+  const SectionFrame f = frame_at(map, station_m);
+  const bool labelled = planes.labels.size() == cloud.points.size();
+  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+    const Eigen::Vector3f& p = cloud.points[i];
+    if (!OrganizedCloud::valid(p)) continue;
+    const Eigen::Vector3d d = p.cast<double>() - f.centre;
+    if (std::abs(d.dot(f.axis)) > half_thickness_m) continue;
+    SectionPoint sp;
+    sp.at = {d.dot(f.right), d.dot(f.up)};
+    if (labelled) {
+      const int id = planes.labels[i];
+      if (id > 0 && static_cast<std::size_t>(id) <= map.plane_classes.size())
+        sp.cls = map.plane_classes[static_cast<std::size_t>(id - 1)];
+    }
+    out.points.push_back(sp);
+  }
+  if (max_points > 0 && out.points.size() > max_points) {
+    const double step = static_cast<double>(out.points.size()) / static_cast<double>(max_points);
+    std::vector<SectionPoint> kept;
+    kept.reserve(max_points);
+    for (std::size_t k = 0; k < max_points; ++k) kept.push_back(out.points[static_cast<std::size_t>(k * step)]);
+    out.points.swap(kept);
+  }
+  out.fitted = fitted_rect(map, f);
+  if (out.fitted && design_width_m && design_height_m && *design_width_m > 0 && *design_height_m > 0) {
+    const double cx = 0.5 * (out.fitted->left + out.fitted->right);
+    const double cy = 0.5 * (out.fitted->bottom + out.fitted->top);
+    out.design = SectionRect{cx - 0.5 * *design_width_m, cx + 0.5 * *design_width_m, cy - 0.5 * *design_height_m,
+                             cy + 0.5 * *design_height_m};
+  }
+  return out;
+}
+
+}  // namespace tunnelmap

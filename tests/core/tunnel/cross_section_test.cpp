@@ -1,0 +1,103 @@
+// A cross-section at a station: the slab's points sit on the fitted rectangle, the rectangle
+// has the tunnel's size, right is right looking along the axis, the design rectangle is centred
+// on it, and a missing wall is placed from the known size.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/pipeline/pipeline.h"
+#include "core/tunnel/cross_section.h"
+#include "tests/support/synthetic_scene.h"
+
+namespace tunnelmap {
+namespace {
+
+// A 0.82 x 1.30 m box tunnel along world +x, the camera on its axis looking down it.
+struct BoxTunnel {
+  FrameResult result;
+  BoxTunnel() {
+    const auto room = test::box_room({-1.0, -0.41, -0.65}, {9.0, 0.41, 0.65});
+    const auto pose = test::look_at({0, 0, 0}, {1, 0, 0});
+    test::SyntheticFrame f = test::render_planes(room, pose, {-1.0, -0.41, -0.65}, {9.0, 0.41, 0.65});
+    f.frame.pose = pose;
+    Pipeline pipeline;
+    pipeline.run(f.frame, result);
+  }
+};
+
+double distance_to_perimeter(const Eigen::Vector2d& p, const SectionRect& r) {
+  return std::min({std::abs(p.x() - r.left), std::abs(p.x() - r.right), std::abs(p.y() - r.bottom),
+                   std::abs(p.y() - r.top)});
+}
+
+TEST(CrossSection, SlabPointsLieOnTheFittedRectangleOfTheTunnelsSize) {
+  const BoxTunnel t;
+  ASSERT_TRUE(t.result.map.detected) << t.result.map.reason;
+  const CrossSection s = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.05);
+  ASSERT_TRUE(s.fitted.has_value());
+  EXPECT_NEAR(s.fitted->width(), 0.82, 0.003);
+  EXPECT_NEAR(s.fitted->height(), 1.30, 0.003);
+  // The camera is on the axis: the rectangle is centred on the section's origin.
+  EXPECT_NEAR(s.fitted->left + s.fitted->right, 0.0, 0.005);
+  EXPECT_NEAR(s.fitted->bottom + s.fitted->top, 0.0, 0.005);
+  ASSERT_GT(s.points.size(), 200u);
+  int on = 0;
+  for (const SectionPoint& p : s.points) on += distance_to_perimeter(p.at, *s.fitted) < 0.01;
+  EXPECT_GT(on, static_cast<int>(0.99 * s.points.size()));
+}
+
+TEST(CrossSection, RightIsRightLookingAlongTheAxisAndTheRoofIsUp) {
+  const BoxTunnel t;
+  const CrossSection s = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.05);
+  double right = 0, top = 0;
+  int n_right = 0, n_top = 0;
+  for (const SectionPoint& p : s.points) {
+    if (p.cls == WallClass::Right) right += p.at.x(), ++n_right;
+    if (p.cls == WallClass::Top) top += p.at.y(), ++n_top;
+  }
+  ASSERT_GT(n_right, 20);
+  ASSERT_GT(n_top, 20);
+  EXPECT_NEAR(right / n_right, 0.41, 0.01);
+  EXPECT_NEAR(top / n_top, 0.65, 0.01);
+}
+
+TEST(CrossSection, TheSlabKeepsOnlyPointsNearTheStation) {
+  const BoxTunnel t;
+  const CrossSection thin = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.01);
+  const CrossSection thick = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.10);
+  EXPECT_GT(thick.points.size(), 5 * thin.points.size());
+  const CrossSection capped = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.10,
+                                            std::nullopt, std::nullopt, 100);
+  EXPECT_EQ(capped.points.size(), 100u);
+  // The stations the frame sees start beyond the near range and end within the max range.
+  const StationRange r = visible_stations(t.result.map);
+  EXPECT_GT(r.to_m, 3.0);
+  EXPECT_LE(r.to_m, 5.01);
+  EXPECT_LT(r.from_m, r.to_m);
+}
+
+TEST(CrossSection, TheDesignRectangleIsCentredOnTheFittedOne) {
+  const BoxTunnel t;
+  const CrossSection s = cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.05, 0.80, 1.28);
+  ASSERT_TRUE(s.design.has_value());
+  EXPECT_NEAR(s.design->width(), 0.80, 1e-12);
+  EXPECT_NEAR(s.design->height(), 1.28, 1e-12);
+  EXPECT_NEAR(s.design->left - s.fitted->left, 0.01, 0.003);  // 10 mm narrower on each side
+  EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, t.result.map, 2.0, 0.05, 0.80).design);
+}
+
+TEST(CrossSection, AMissingWallIsPlacedFromTheKnownSize) {
+  const BoxTunnel t;
+  TunnelMap map = t.result.map;
+  map.wall(WallClass::Top).found = false;
+  const CrossSection s = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
+  ASSERT_TRUE(s.fitted.has_value());
+  EXPECT_NEAR(s.fitted->height(), map.height_m, 1e-9);
+  map.height_source = DimensionSource::Unseen;
+  EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05).fitted.has_value());
+  map.detected = false;
+  EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05).fitted.has_value());
+}
+
+}  // namespace
+}  // namespace tunnelmap

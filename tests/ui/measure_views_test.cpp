@@ -1,0 +1,355 @@
+// The measuring views under Xvfb. The cross-section dock, on a hand-built 1.0 x 0.8 m tunnel,
+// draws the fitted rectangle where the walls are, the dashed design rectangle, a caption with
+// the deviation, measures between two clicked points, and its slider walks the frame's visible
+// stations. The profile plot draws stations beyond tolerance red and selects the clicked one.
+// The 3D view's measure mode picks two wall points and measures the width between them. The
+// main window maps a posed walk and moves to a clicked station.
+// TUNNELMAP_GUI_SHOT_DIR=DIR keeps screenshots of both.
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QtTest/QtTest>
+#include <cmath>
+#include <memory>
+
+#include "tests/ui/synthetic_tunnel.h"
+#include "ui/cross_section_panel.h"
+#include "ui/profile_plot.h"
+#include "ui/view3d_widget.h"
+#include "ui/main_window.h"
+#include <QProcess>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QSurfaceFormat>
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkRenderWindow.h>
+#include "ui/scene/scene_colors.h"
+
+using tunnelmap::ui::CrossSectionPanel;
+
+namespace {
+
+std::shared_ptr<const tunnelmap::scene::ProcessedFrame> tunnel() {
+  auto pf = std::make_shared<tunnelmap::scene::ProcessedFrame>(tunnelmap::test::make_synthetic_tunnel(1.0, 0.8, 3.0));
+  pf->result.map.width_source = pf->result.map.height_source = tunnelmap::DimensionSource::Measured;
+  return pf;
+}
+
+bool is_blue(QRgb c) { return qBlue(c) > 200 && qRed(c) < 60 && qGreen(c) < 110; }
+bool is_white(QRgb c) { return qRed(c) > 200 && qGreen(c) > 200 && qBlue(c) > 200; }
+
+// Pixels of `pred` on a short vertical run through `x` around the middle height.
+int count_near(const QImage& img, int x, int y0, int y1, bool (*pred)(QRgb)) {
+  int n = 0;
+  for (int dx = -2; dx <= 2; ++dx)
+    for (int y = y0; y <= y1; ++y)
+      if (x + dx >= 0 && x + dx < img.width() && pred(img.pixel(x + dx, y))) ++n;
+  return n;
+}
+
+}  // namespace
+
+class CrossSectionTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void drawsTheFittedAndDesignRectanglesWithTheDeviation() {
+    CrossSectionPanel panel;
+    panel.resize(640, 560);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.set_frame(tunnel(), 0.98, 0.78);
+    const tunnelmap::CrossSection s = panel.view()->section();
+    QVERIFY(s.fitted.has_value());
+    QCOMPARE(std::round(s.fitted->width() * 1000), 1000.0);
+    QCOMPARE(std::round(s.fitted->height() * 1000), 800.0);
+    QVERIFY(s.points.size() > 100);
+    const QString caption = panel.view()->caption();
+    QVERIFY2(caption.contains("width 1.000 m, height 0.800 m"), qPrintable(caption));
+    QVERIFY2(caption.contains("width 20.0 mm, height 20.0 mm"), qPrintable(caption));
+
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR"))
+      panel.view()->grab().toImage().save(QString(dir) + "/cross_section.png");
+    // The rectangles alone (the synthetic points lie exactly on the fitted one and hide it).
+    tunnelmap::CrossSection bare = s;
+    bare.points.clear();
+    panel.view()->set_section(bare);
+    const QImage img = panel.view()->grab().toImage();
+    // The fitted left edge is blue, the design's left edge (10 mm inside) is drawn too.
+    const QPointF left = panel.view()->to_widget({s.fitted->left, 0.0});
+    const QPointF top = panel.view()->to_widget({0.0, s.fitted->top * 0.5});
+    const int mid = static_cast<int>(left.y()), y0 = static_cast<int>(top.y());
+    QVERIFY(count_near(img, static_cast<int>(left.x()), y0, mid, is_blue) > 20);
+    const QPointF design_left = panel.view()->to_widget({s.design->left, 0.0});
+    QVERIFY(count_near(img, static_cast<int>(design_left.x()), y0, mid, is_white) > 5);
+    // Equal scale: the drawn rectangle is 1.0 : 0.8.
+    const QPointF a = panel.view()->to_widget({s.fitted->left, s.fitted->bottom});
+    const QPointF b = panel.view()->to_widget({s.fitted->right, s.fitted->top});
+    QCOMPARE(std::round(100.0 * (b.x() - a.x()) / (a.y() - b.y())), 125.0);
+  }
+
+  void twoClicksMeasureTheDistanceBetweenTheSnappedPoints() {
+    CrossSectionPanel panel;
+    panel.resize(640, 560);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.set_frame(tunnel(), std::nullopt, std::nullopt);
+    auto* view = panel.view();
+    QVERIFY(!view->section().design.has_value());
+    QSignalSpy measured(view, &tunnelmap::ui::CrossSectionView::measured);
+    // Click 4 px inside the left wall and 4 px inside the right one, at mid height: the picks
+    // snap onto the walls' points, 1.0 m apart.
+    const QPointF l = view->to_widget({-0.5, 0.0}) + QPointF(4, 0);
+    const QPointF r = view->to_widget({0.5, 0.0}) - QPointF(4, 0);
+    QTest::mouseClick(view, Qt::LeftButton, {}, l.toPoint());
+    QCOMPARE(view->picks().size(), std::size_t{1});
+    QVERIFY(!view->measured_m().has_value());
+    QTest::mouseClick(view, Qt::LeftButton, {}, r.toPoint());
+    QVERIFY(view->measured_m().has_value());
+    QVERIFY2(std::abs(*view->measured_m() - 1.0) < 0.03, qPrintable(QString::number(*view->measured_m())));
+    QCOMPARE(measured.count(), 1);
+    // A third click starts a new measurement.
+    QTest::mouseClick(view, Qt::LeftButton, {}, l.toPoint());
+    QCOMPARE(view->picks().size(), std::size_t{1});
+  }
+
+  void theSliderWalksTheVisibleStations() {
+    CrossSectionPanel panel;
+    panel.show();
+    panel.set_frame(tunnel(), std::nullopt, std::nullopt);
+    auto* slider = panel.findChild<QSlider*>();
+    QVERIFY(slider && slider->isEnabled());
+    QSignalSpy changed(&panel, &CrossSectionPanel::stationChanged);
+    slider->setValue(slider->minimum());
+    const double near = panel.station();
+    slider->setValue(slider->maximum());
+    const double far = panel.station();
+    QVERIFY2(far - near > 1.0, qPrintable(QString("%1 .. %2").arg(near).arg(far)));
+    QVERIFY(changed.count() >= 2);
+    QCOMPARE(panel.view()->section().station_m, far);
+    // No tunnel: the slider is off and the view shows no rectangle.
+    auto none = std::make_shared<tunnelmap::scene::ProcessedFrame>(*tunnel());
+    none->result.map.detected = false;
+    panel.set_frame(none, std::nullopt, std::nullopt);
+    QVERIFY(!slider->isEnabled());
+    QVERIFY(!panel.view()->section().fitted.has_value());
+  }
+};
+
+// 20 stations of 0.1 m, two sections; design 0.82 x 1.30 m, 10 mm tolerance; the width reads
+// 0.84 m (20 mm over) at stations 1.05 to 1.25.
+tunnelmap::StationMap profile_map() {
+  tunnelmap::StationMap m;
+  m.ok = true;
+  m.options.station_step_m = 0.1;
+  m.options.tolerance_mm = 10.0;
+  m.options.design_width_m = 0.82;
+  m.options.design_height_m = 1.30;
+  for (int i = 0; i < 20; ++i) {
+    tunnelmap::Station s;
+    s.station_m = 0.05 + 0.1 * i;
+    s.width_m = i >= 10 && i <= 12 ? 0.84 : 0.8205;
+    s.height_m = 1.301;
+    s.width_source = s.height_source = tunnelmap::DimensionSource::Measured;
+    if (i == 0) s.height_source = tunnelmap::DimensionSource::Context;
+    s.width_dev_mm = (s.width_m - 0.82) * 1000.0;
+    s.height_dev_mm = (s.height_m - 1.30) * 1000.0;
+    s.out_of_tolerance = std::abs(*s.width_dev_mm) > 10.0;
+    m.stations.push_back(s);
+  }
+  m.sections = {{0.0, 1.0, 0.8205, 1.301, 5}, {1.0, 2.0, 0.8205, 1.301, 5}};
+  return m;
+}
+
+class ProfilePlotTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void stationsBeyondToleranceAreRedAndAClickSelectsTheNearest() {
+    tunnelmap::ui::ProfilePlot plot;
+    plot.resize(800, 360);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    plot.set_map(profile_map());
+    const QImage img = plot.grab().toImage();
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) img.save(QString(dir) + "/profile.png");
+    // Red dots at 1.05-1.25 m in the width plot, none elsewhere; the height plot has none.
+    auto red_in = [&](int series, double from, double to) {
+      const QRectF a = plot.area(series);
+      int n = 0;
+      for (int y = static_cast<int>(a.top()); y < a.bottom(); ++y)
+        for (int x = static_cast<int>(plot.x_of(from)); x <= plot.x_of(to); ++x) {
+          const QRgb c = img.pixel(x, y);
+          n += qRed(c) > 200 && qGreen(c) < 110 && qBlue(c) < 110;
+        }
+      return n;
+    };
+    QVERIFY(red_in(0, 1.0, 1.3) > 30);
+    QCOMPARE(red_in(0, 0.0, 0.95), 0);
+    QCOMPARE(red_in(1, 0.0, 2.0), 0);
+
+    QSignalSpy clicked(&plot, &tunnelmap::ui::ProfilePlot::stationClicked);
+    const QPoint at(static_cast<int>(plot.x_of(1.15) + 2), static_cast<int>(plot.area(1).center().y()));
+    QTest::mouseClick(&plot, Qt::LeftButton, {}, at);
+    QCOMPARE(clicked.count(), 1);
+    QVERIFY(std::abs(clicked.at(0).at(0).toDouble() - 1.15) < 1e-9);
+    QVERIFY(plot.current_station().has_value());
+    // The marker is drawn at the current station.
+    const QImage marked = plot.grab().toImage();
+    const QRgb m = marked.pixel(static_cast<int>(std::lround(plot.x_of(1.15))), static_cast<int>(plot.area(0).top()) + 3);
+    QVERIFY2(qRed(m) > 200 && qGreen(m) > 150 && qBlue(m) < 120, qPrintable(QColor(m).name()));
+  }
+
+  void withoutAMapItSaysHowToGetOne() {
+    tunnelmap::ui::ProfilePlot plot;
+    QVERIFY(!plot.station_at(100).has_value());
+    plot.resize(400, 240);
+    const QImage img = plot.grab().toImage();
+    QVERIFY(img.width() == 400);
+  }
+};
+
+class View3DMeasureTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void twoClicksInTheMeasureModeMeasureTheTunnelWidth() {
+    tunnelmap::ui::View3DWidget view;
+    view.resize(640, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const auto pf = tunnel();
+    view.show_frame(*pf, true);
+    view.set_layer_visible(tunnelmap::scene::Layer::Planes, false);
+    // Widget pixels of a left-wall and a right-wall cloud point 1.5 m ahead.
+    auto pixel_of = [&](const Eigen::Vector3d& target) {
+      Eigen::Vector3d best(1e9, 1e9, 1e9);
+      for (const auto& p : pf->result.cloud.points)
+        if (tunnelmap::OrganizedCloud::valid(p) && (p.cast<double>() - target).norm() < (best - target).norm())
+          best = p.cast<double>();
+      auto* r = view.scene().renderer();
+      r->SetWorldPoint(best.x(), best.y(), best.z(), 1.0);
+      r->WorldToDisplay();
+      const double* d = r->GetDisplayPoint();
+      const double ratio = view.devicePixelRatioF();
+      return QPoint(static_cast<int>(std::lround(d[0] / ratio)),
+                    static_cast<int>(std::lround((view.renderWindow()->GetSize()[1] - 1 - d[1]) / ratio)));
+    };
+    const QPoint left = pixel_of({-0.5, 0.0, 1.5}), right = pixel_of({0.5, 0.0, 1.5});
+    QSignalSpy changed(&view, &tunnelmap::ui::View3DWidget::measurementChanged);
+    // Not measuring: a click rotates the camera, picks nothing.
+    QTest::mouseClick(&view, Qt::LeftButton, {}, left);
+    QVERIFY(view.scene().measurement().picks.empty());
+    view.show_frame(*pf, true);
+    view.set_measuring(true);
+    QTest::mouseClick(&view, Qt::LeftButton, {}, left);
+    QTest::mouseClick(&view, Qt::LeftButton, {}, right);
+    const auto d = view.scene().measurement().distance_m();
+    QVERIFY(d.has_value());
+    QVERIFY2(std::abs(*d - 1.0) < 0.02, qPrintable(QString::number(*d)));
+    QCOMPARE(changed.count(), 2);
+    QVERIFY(changed.last().at(0).toString().endsWith(" mm"));
+    const QImage shot = view.grabFramebuffer();
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) shot.save(QString(dir) + "/measure3d.png");
+    view.clear_measurement();
+    QVERIFY(view.scene().measurement().picks.empty());
+    QCOMPARE(changed.last().at(0).toString(), QString());
+  }
+};
+
+// The main window's review docks on a simulated posed walk: Processing > Map tunnel fills the
+// profile; clicking a station shows the frame that sees it best and cuts the cross-section
+// there, where the fitted width is the map's width at that station.
+class MapReviewTest : public QObject {
+  Q_OBJECT
+
+ private:
+  QTemporaryDir dir_;
+  QString walk_;
+
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings().clear();
+    QVERIFY(dir_.isValid());
+    walk_ = dir_.filePath("walk");
+    QProcess sim;
+    sim.start(TUNNELMAP_CLI_PATH, {"simulate", "--preset", "lab", "--frames", "16", "--seed", "4", "--quiet",
+                                   "--sections", "2:0.84x1.30,2:0.80x1.28", "--walk", "-1,2.5,8", walk_});
+    QVERIFY(sim.waitForFinished(120000));
+    QCOMPARE(sim.exitCode(), 0);
+  }
+
+  void clickingAStationShowsItsFrameAndCutsThere() {
+    tunnelmap::ui::MainWindow w;
+    w.suppress_dialogs = true;
+    w.resize(1600, 1000);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QSignalSpy shown(&w, &tunnelmap::ui::MainWindow::frameShown);
+    QVERIFY(w.open_input(walk_));
+    QVERIFY(shown.wait(30000));
+    // The cross-section follows the shown frame from the start.
+    QVERIFY(w.cross_section()->view()->section().fitted.has_value());
+
+    QSignalSpy mapped(&w, &tunnelmap::ui::MainWindow::tunnelMapped);
+    w.map_tunnel();
+    QVERIFY(mapped.wait(120000));
+    QCOMPARE(mapped.at(0).at(0).toBool(), true);
+    const tunnelmap::StationMap& m = w.profile()->map();
+    QVERIFY(m.stations.size() > 20);
+    QCOMPARE(m.sections.size(), std::size_t{2});
+
+    // A measured station of the first section, then one of the second.
+    for (double want : {1.0, 3.0}) {
+      const tunnelmap::Station* st = nullptr;
+      for (const auto& s : m.stations)
+        if (s.width_source == tunnelmap::DimensionSource::Measured && (!st || std::abs(s.station_m - want) < std::abs(st->station_m - want)))
+          st = &s;
+      QVERIFY(st);
+      const int before = w.frame_index();
+      QVERIFY(w.show_station(st->station_m));
+      if (w.frame_index() != before) QVERIFY(shown.wait(30000));
+      QVERIFY(w.profile()->current_station().has_value());
+      const auto& cut = w.cross_section()->view()->section();
+      QVERIFY(cut.fitted.has_value());
+      QVERIFY2(std::abs(cut.fitted->width() - st->width_m) < 0.01,
+               qPrintable(QString("station %1: cut %2 vs map %3").arg(st->station_m).arg(cut.fitted->width()).arg(st->width_m)));
+      QVERIFY(cut.station_m > 0.4 && cut.station_m < 4.6);
+    }
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
+  }
+
+  void mapTunnelOnAPlainFrameSaysWhy() {
+    tunnelmap::ui::MainWindow w;
+    w.suppress_dialogs = true;
+    QSignalSpy shown(&w, &tunnelmap::ui::MainWindow::frameShown);
+    QVERIFY(w.open_input(QString(TUNNELMAP_SOURCE_DIR) + "/resources/sample/lab/depth/000000.png"));
+    QVERIFY(shown.wait(30000));
+    QSignalSpy mapped(&w, &tunnelmap::ui::MainWindow::tunnelMapped);
+    w.map_tunnel();
+    QCOMPARE(mapped.count(), 1);
+    QCOMPARE(mapped.at(0).at(0).toBool(), false);
+    QVERIFY2(w.last_error().contains("needs a posed dataset"), qPrintable(w.last_error()));
+    QVERIFY(!w.show_station(1.0));
+  }
+};
+
+int main(int argc, char** argv) {
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("TunnelMapTest");
+  CrossSectionTest cross_section;
+  ProfilePlotTest profile;
+  View3DMeasureTest measure;
+  MapReviewTest review;
+  int failures = QTest::qExec(&cross_section, argc, argv);
+  failures += QTest::qExec(&profile, argc, argv);
+  failures += QTest::qExec(&measure, argc, argv);
+  failures += QTest::qExec(&review, argc, argv);
+  return failures;
+}
+
+#include "measure_views_test.moc"

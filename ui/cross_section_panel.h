@@ -1,0 +1,46 @@
+#pragma once
+// The cross-section dock: a station slider over the frame's visible stations, the slab
+// thickness, and the CrossSectionView of the shown frame at that station. The design rectangle
+// comes from tunnel.design_width_m / design_height_m when both are set.
+#include <QWidget>
+#include <memory>
+#include <optional>
+
+#include "ui/cross_section_view.h"
+#include "ui/scene/processed_frame.h"
+
+class QDoubleSpinBox;
+class QSlider;
+class QLabel;
+
+namespace tunnelmap::ui {
+
+class CrossSectionPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit CrossSectionPanel(QWidget* parent = nullptr);
+
+  // The frame to cut; null clears. Keeps the station when it is still in view.
+  void set_frame(std::shared_ptr<const scene::ProcessedFrame> frame, std::optional<double> design_width_m,
+                 std::optional<double> design_height_m);
+  void set_station(double station_m);
+  double station() const;
+  CrossSectionView* view() const { return view_; }
+
+ signals:
+  void stationChanged(double station_m);
+
+ private:
+  void recompute();
+
+  std::shared_ptr<const scene::ProcessedFrame> frame_;
+  std::optional<double> design_w_, design_h_;
+  StationRange range_;
+  QSlider* slider_ = nullptr;
+  QDoubleSpinBox* station_ = nullptr;
+  QDoubleSpinBox* thickness_ = nullptr;
+  QLabel* range_label_ = nullptr;
+  CrossSectionView* view_ = nullptr;
+};
+
+}  // namespace tunnelmap::ui

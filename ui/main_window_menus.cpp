@@ -1,0 +1,133 @@
+// MainWindow's menus and their actions (object names are what tests trigger).
+#include <QAction>
+#include <QActionGroup>
+#include <QFileDialog>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QUndoStack>
+
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+#include "ui/view3d_widget.h"
+
+namespace tunnelmap::ui {
+
+void MainWindow::build_menus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open…"), this, [this] {
+    const QString path = ask_open_path(tr("Open depth PNG, PCD, OpenNI recording or dataset.json"),
+                                       tr("Inputs (*.png *.pcd *.oni *.json);;All files (*)"));
+    if (!path.isEmpty()) open_input(path);
+  }, QKeySequence::Open)->setObjectName("open");
+  file->addAction(tr("Open &folder…"), this, [this] {
+    QSettings s;
+    const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"),
+                                                          s.value("files/lastFolder").toString());
+    if (!dir.isEmpty()) open_input(dir);
+  });
+  file->addAction(tr("Open &mesh…"), this, [this] {
+    const QString path = ask_open_path(tr("Open mesh PLY"), tr("PLY (*.ply)"));
+    if (!path.isEmpty()) open_mesh(path);
+  })->setObjectName("openMesh");
+  recent_menu_ = file->addMenu(tr("Open &recent"));
+  rebuild_recent_menu();
+  build_session_actions(file);  // review sessions, Export 3D view, intrinsics (main_window_session.cpp)
+  file->addSeparator();
+  file->addAction(tr("Export &map PLY…"), this, [this] {
+    const QString p = ask_save_path(tr("Export map PLY"), tr("PLY (*.ply)"), "ply");
+    if (!p.isEmpty()) export_map_ply(p);
+  })->setObjectName("exportMapPly");
+  file->addAction(tr("Export &planes PLY…"), this, [this] {
+    const QString p = ask_save_path(tr("Export planes PLY"), tr("PLY (*.ply)"), "ply");
+    if (!p.isEmpty()) export_planes_ply(p);
+  })->setObjectName("exportPlanesPly");
+  file->addAction(tr("Export results &JSON…"), this, [this] {
+    const QString p = ask_save_path(tr("Export results JSON"), tr("JSON (*.json)"), "json");
+    if (!p.isEmpty()) export_results_json(p);
+  })->setObjectName("exportResultsJson");
+  file->addAction(tr("Export results &CSV…"), this, [this] {
+    const QString p = ask_save_path(tr("Export results CSV"), tr("CSV (*.csv)"), "csv");
+    if (!p.isEmpty()) export_results_csv(p);
+  })->setObjectName("exportResultsCsv");
+  file->addAction(tr("Save &screenshot…"), this, [this] {
+    const QString p = ask_save_path(tr("Save screenshot"), tr("PNG (*.png)"), "png");
+    if (!p.isEmpty()) save_screenshot(p);
+  })->setObjectName("saveScreenshot");
+  file->addSeparator();
+  file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence)
+      ->setObjectName("processSequence");
+  file->addSeparator();
+  file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+  // Edit: undo/redo of parameter changes (each completed edit, Reset all, a loaded preset).
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = params_->undo_stack()->createUndoAction(this, tr("&Undo"));
+  undo->setObjectName("undo");
+  undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+  edit->addAction(undo);
+  QAction* redo = params_->undo_stack()->createRedoAction(this, tr("&Redo"));
+  redo->setObjectName("redo");
+  redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  edit->addAction(redo);
+
+  QMenu* processing = menuBar()->addMenu(tr("&Processing"));
+  QMenu* method_menu = processing->addMenu(tr("&Method"));
+  method_actions_ = new QActionGroup(this);
+  for (Method m : {Method::Pgc, Method::Ransac, Method::Qhull}) {
+    QAction* a = method_menu->addAction(QString::fromUtf8(method_display_name(m)).replace("&", "&&"));
+    a->setObjectName(QString("method_") + method_name(m));
+    a->setCheckable(true);
+    a->setChecked(m == method_);
+    method_actions_->addAction(a);
+    connect(a, &QAction::triggered, this, [this, m] { set_method(m); });
+  }
+  processing->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence);
+  processing->addAction(tr("&Fuse sequence"), this, &MainWindow::fuse_sequence)->setObjectName("fuseSequence");
+
+  QMenu* device = menuBar()->addMenu(tr("&Device"));
+  device->addAction(tr("&Refresh device list"), this, [this] { refresh_devices(); })->setObjectName("refreshDevices");
+  devices_menu_ = device->addMenu(tr("&Devices"));
+  device_actions_ = new QActionGroup(this);
+  device->addAction(tr("&Start live view"), this, [this] { start_live_view(QString()); })->setObjectName("startLive");
+  device->addAction(tr("Start live view on &URI…"), this, [this] {
+    bool ok = false;
+    const QString uri = QInputDialog::getText(this, tr("Live view"), tr("OpenNI2 device URI:"), QLineEdit::Normal,
+                                              "tunnelmap-sim://lab", &ok);
+    if (ok && !uri.isEmpty()) start_live_view(uri);
+  });
+  device->addAction(tr("S&top live view"), this, &MainWindow::stop_live_view)->setObjectName("stopLive");
+  device->addSeparator();
+  device->addAction(tr("&Record…"), this, [this] {
+    const QString p = ask_save_path(tr("Record OpenNI2 .oni"), tr("OpenNI recording (*.oni)"), "oni");
+    if (!p.isEmpty()) start_recording(p);
+  })->setObjectName("record");
+  device->addAction(tr("Stop r&ecording"), this, [this] { stop_recording(); })->setObjectName("stopRecording");
+  update_device_actions();
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  for (scene::Layer layer : scene::all_layers()) {
+    QAction* a = view->addAction(tr(scene::layer_title(layer)));
+    a->setCheckable(true);
+    a->setChecked(view3d_->scene().layer_visible(layer));
+    connect(a, &QAction::toggled, this, [this, layer](bool on) { view3d_->set_layer_visible(layer, on); });
+  }
+  view->addSeparator();
+  refined_action_ = view->addAction(tr("Refined &poses"));
+  refined_action_->setObjectName("refinedPoses");
+  refined_action_->setCheckable(true);
+  refined_action_->setChecked(true);
+  refined_action_->setEnabled(false);  // until a fusion with refined poses is shown
+  refined_action_->setStatusTip(tr("Fused view: camera frusta, merged map and mesh at the refined poses (on) "
+                                   "or at the forward-kinematics poses (off)"));
+  connect(refined_action_, &QAction::toggled, this, &MainWindow::show_refined_poses);
+  view->addSeparator();
+  view->addAction(tr("Look &along the tunnel"), this, [this] { view3d_->apply_view(scene::ViewPreset::Along); }, QKeySequence("1"));
+  view->addAction(tr("From the &side"), this, [this] { view3d_->apply_view(scene::ViewPreset::Side); }, QKeySequence("2"));
+  view->addAction(tr("From &above"), this, [this] { view3d_->apply_view(scene::ViewPreset::Top); }, QKeySequence("3"));
+  view->addAction(tr("&Reset camera"), this, [this] { view3d_->apply_view(scene::ViewPreset::Reset); }, QKeySequence("0"));
+  build_review_docks(processing, view);  // cross-section, profile, measuring (main_window_review.cpp)
+}
+
+}  // namespace tunnelmap::ui

@@ -1,0 +1,167 @@
+// MainWindow, review docks: the cross-section of the shown frame at a station, the tunnel's
+// profile from Processing > Map tunnel (a posed dataset's station map, on a worker thread), and
+// the 3D view's measure tool. Clicking a station on the profile shows the frame that sees it
+// best and cuts the cross-section there.
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenu>
+#include <QtConcurrent/QtConcurrentRun>
+#include <optional>
+
+#include "core/mapping/dataset_mapping.h"
+#include "core/mapping/station_frames.h"
+#include "core/tunnel/tunnel_options.h"
+#include "ui/cross_section_panel.h"
+#include "ui/main_window.h"
+#include "ui/parameter_panel.h"
+#include "ui/profile_plot.h"
+#include "ui/view3d_widget.h"
+
+namespace tunnelmap::ui {
+
+// What the profile needs to turn a station into a frame.
+struct ReviewMap {
+  std::shared_ptr<const FrameSource> source;  // the input the map was built from
+  std::vector<Eigen::Isometry3d> poses;       // per frame, as the map used them
+  std::vector<bool> detected;
+  std::optional<double> pending_ahead;        // cut here once the chosen frame is shown
+};
+
+namespace {
+std::optional<double> positive(double v) { return v > 0 ? std::optional<double>(v) : std::nullopt; }
+}  // namespace
+
+void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
+  review_map_ = std::make_shared<ReviewMap>();
+  cross_section_ = new CrossSectionPanel(this);
+  cross_section_->setObjectName("crossSection");
+  cross_section_dock_ = new QDockWidget(tr("Cross-section"), this);
+  cross_section_dock_->setObjectName("crossSectionDock");
+  cross_section_dock_->setWidget(cross_section_);
+  addDockWidget(Qt::RightDockWidgetArea, cross_section_dock_);
+
+  profile_ = new ProfilePlot(this);
+  profile_->setObjectName("profilePlot");
+  profile_dock_ = new QDockWidget(tr("Tunnel profile"), this);
+  profile_dock_->setObjectName("profileDock");
+  profile_dock_->setWidget(profile_);
+  // Along the bottom, a tab beside the frames and results: a profile is wide, and the
+  // cross-section it drives stays in view on the right.
+  addDockWidget(Qt::BottomDockWidgetArea, profile_dock_);
+  if (auto* results = findChild<QDockWidget*>("resultsDock")) {
+    tabifyDockWidget(results, profile_dock_);
+    results->raise();
+  }
+  connect(profile_, &ProfilePlot::stationClicked, this, [this](double s) { show_station(s); });
+  connect(cross_section_->view(), &CrossSectionView::measured, this, [this](double m) {
+    status_label_->setText(tr("Cross-section: %1 mm between the two picks").arg(m * 1000.0, 0, 'f', 1));
+  });
+
+  processing->addSeparator();
+  QAction* map = processing->addAction(tr("&Map tunnel"), this, &MainWindow::map_tunnel);
+  map->setObjectName("mapTunnel");
+  map->setStatusTip(tr("Posed datasets: the station-by-station profile of the whole tunnel"));
+
+  view->addSeparator();
+  QAction* measure = view->addAction(tr("&Measure in 3D"));
+  measure->setObjectName("measure3d");
+  measure->setCheckable(true);
+  measure->setShortcut(QKeySequence("M"));
+  measure->setStatusTip(tr("Click two points in the 3D view to measure their distance"));
+  connect(measure, &QAction::toggled, view3d_, &View3DWidget::set_measuring);
+  view->addAction(tr("C&lear measurement"), view3d_, &View3DWidget::clear_measurement, QKeySequence("Esc"));
+  connect(view3d_, &View3DWidget::measurementChanged, this, [this](const QString& text) {
+    if (!text.isEmpty()) status_label_->setText(tr("3D measurement: %1").arg(text));
+  });
+  view->addAction(cross_section_dock_->toggleViewAction());
+  view->addAction(profile_dock_->toggleViewAction());
+}
+
+void MainWindow::review_frame_shown() {
+  if (!current_ || !cross_section_) return;
+  // A measurement belongs to the frame it was picked in.
+  if (review_frame_ != frame_index_) view3d_->clear_measurement();
+  review_frame_ = frame_index_;
+  const Parameters& p = params_->parameters();
+  const double w = p.get(tunnel_keys::design_width_m), h = p.get(tunnel_keys::design_height_m);
+  const std::optional<double> dw = positive(w), dh = positive(h);
+  cross_section_->set_frame(current_, dw && dh ? dw : std::nullopt, dw && dh ? dh : std::nullopt);
+  if (review_map_->pending_ahead) {
+    cross_section_->set_station(*review_map_->pending_ahead);
+    review_map_->pending_ahead.reset();
+  }
+}
+
+bool MainWindow::map_running() const { return map_running_; }
+
+void MainWindow::map_tunnel() {
+  if (map_running_ || sequence_running_) return;
+  const Dataset* ds = source_ ? source_->dataset() : nullptr;
+  if (!ds) {
+    show_error(tr("%1: Map tunnel needs a posed dataset (dataset.json with poses or joints)")
+                   .arg(input_path_.isEmpty() ? tr("no input") : input_path_));
+    emit tunnelMapped(false);
+    return;
+  }
+  map_running_ = true;
+  status_label_->setText(tr("Mapping the tunnel over %1 frame(s)…").arg(ds->frames.size()));
+  auto source = source_;
+  Pipeline pipeline(params_->parameters());
+  (void)QtConcurrent::run([this, source, pipeline]() mutable {
+    auto result = std::make_shared<DatasetMapping>();
+    std::vector<Eigen::Isometry3d> poses;
+    QString error;
+    try {
+      *result = map_dataset(*source->dataset(), pipeline, true);
+      poses = result->mapped.poses;
+    } catch (const std::exception& e) {
+      error = QString::fromStdString(e.what());
+    }
+    QMetaObject::invokeMethod(this, [this, source, result, poses, error] {
+      map_running_ = false;
+      if (!error.isEmpty()) {
+        show_error(error);
+        return emit tunnelMapped(false);
+      }
+      const StationMap& m = result->mapped.stations;
+      if (!m.ok) {
+        show_error(tr("%1: no map: %2").arg(input_path_, QString::fromStdString(m.reason)));
+        return emit tunnelMapped(false);
+      }
+      review_map_->source = source;
+      review_map_->poses = poses;
+      review_map_->detected.clear();
+      for (const TunnelMap& f : result->maps) review_map_->detected.push_back(f.detected);
+      profile_->set_map(m);
+      profile_dock_->show();
+      profile_dock_->raise();
+      status_label_->setText(tr("Tunnel mapped: %1 stations over %2 m, %3 section(s), %4 out of tolerance")
+                                 .arg(m.stations.size())
+                                 .arg(m.sections.back().to_m - m.sections.front().from_m, 0, 'f', 2)
+                                 .arg(m.sections.size())
+                                 .arg(m.out_of_tolerance().size()));
+      emit tunnelMapped(true);
+    });
+  });
+}
+
+bool MainWindow::show_station(double station_m) {
+  if (review_map_->source != source_ || profile_->map().stations.empty()) return false;
+  const auto view = frame_for_station(profile_->map(), review_map_->poses, review_map_->detected, station_m);
+  profile_->set_current_station(station_m);
+  if (!view) {
+    status_label_->setText(tr("No frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2));
+    return false;
+  }
+  cross_section_dock_->show();
+  cross_section_dock_->raise();
+  if (view->frame == frame_index_ && current_) {
+    cross_section_->set_station(view->ahead_m);
+    return true;
+  }
+  review_map_->pending_ahead = view->ahead_m;
+  return select_frame(view->frame);
+}
+
+}  // namespace tunnelmap::ui

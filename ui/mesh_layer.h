@@ -1,0 +1,20 @@
+#pragma once
+// The 3D view's mesh layer: a mesh PLY file as VTK polydata, and a world-frame mesh moved into
+// the camera frame of the shown frame.
+#include <Eigen/Geometry>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include "core/io/ply_mesh_reader.h"
+
+namespace tunnelmap::ui {
+
+// Points, triangles and vertex colours through scene::mesh_polydata (the converter the fused
+// scene uses for its TSDF mesh), plus the file's normals when it has them.
+vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& mesh);
+
+// `world_mesh` with every point mapped by `world_to_camera`; normals dropped (world-frame
+// normals would light it wrongly). Shares the cells and colours of `world_mesh`.
+vtkSmartPointer<vtkPolyData> mesh_in_camera_frame(vtkPolyData* world_mesh, const Eigen::Isometry3d& world_to_camera);
+
+}  // namespace tunnelmap::ui

@@ -1,0 +1,19 @@
+#pragma once
+// Results files of the GUI, one entry per results-table row: the documents `detect --json` and
+// `--csv` write (core/report; the JSON loads as a preset by its "params"). The File-menu
+// exports (MainWindow::export_*) are in results_export.cpp too.
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "ui/frame_record.h"
+
+namespace tunnelmap::ui {
+
+// `dataset` (may be null): the ground truth of the summary.
+void write_results_json(const std::string& path, const std::string& input,
+                        const std::vector<FrameRecord>& records, const nlohmann::json& params,
+                        const Dataset* dataset);
+void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records);
+
+}  // namespace tunnelmap::ui
