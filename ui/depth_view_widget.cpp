@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <vector>
 
 #include "ui/scene/scene_colors.h"
 
@@ -72,10 +73,77 @@ void DepthViewWidget::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), QColor(30, 30, 34));
   if (image_.isNull()) {
     p.setPen(Qt::gray);
-    p.drawText(rect(), Qt::AlignCenter, tr("Open a depth PNG, PCD or dataset folder"));
+    p.drawText(rect().adjusted(8, 8, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+               tr("Open a depth PNG, PCD, dataset folder or folder of depth PNGs"));
     return;
   }
   p.drawImage(image_rect(), image_);
+  if (picked_pixels_.empty()) return;
+  p.setRenderHint(QPainter::Antialiasing, true);
+  p.setPen(QPen(Qt::white, 2));
+  p.setBrush(Qt::white);
+  for (const QPoint& uv : picked_pixels_) p.drawEllipse(widget_point(uv.x(), uv.y()), 3.5, 3.5);
+  if (picked_pixels_.size() == 2 && measurement_.distance_m()) {
+    const QPoint a = widget_point(picked_pixels_[0].x(), picked_pixels_[0].y());
+    const QPoint b = widget_point(picked_pixels_[1].x(), picked_pixels_[1].y());
+    p.drawLine(a, b);
+    p.setFont(QFont(font().family(), 10, QFont::Bold));
+    const QString text = QString::fromStdString(measurement_.label());
+    const QPoint mid = (a + b) / 2 + QPoint(6, -6);
+    p.setPen(Qt::black);
+    p.drawText(mid + QPoint(1, 1), text);
+    p.setPen(Qt::white);
+    p.drawText(mid, text);
+  }
+}
+
+QPoint DepthViewWidget::widget_point(int u, int v) const {
+  const QRect r = image_rect();
+  if (r.isEmpty()) return {};
+  return QPoint(r.x() + static_cast<int>((u + 0.5) * r.width() / image_.width()),
+                r.y() + static_cast<int>((v + 0.5) * r.height() / image_.height()));
+}
+
+void DepthViewWidget::set_measuring(bool on) {
+  measuring_ = on;
+  setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
+void DepthViewWidget::clear_measurement() {
+  if (picked_pixels_.empty()) return;
+  measurement_ = scene::Measurement();
+  picked_pixels_.clear();
+  update();
+  emit measurementChanged(QString());
+}
+
+bool DepthViewWidget::pick_pixel(int u, int v) {
+  if (!frame_) return false;
+  const OrganizedCloud& c = frame_->result.cloud;
+  // The clicked pixel, else the nearest one with a point within 3 px (depth has holes).
+  int best_u = -1, best_v = -1, best_r2 = 1 << 30;
+  for (int dv = -3; dv <= 3; ++dv)
+    for (int du = -3; du <= 3; ++du) {
+      const int uu = u + du, vv = v + dv;
+      if (uu < 0 || vv < 0 || uu >= c.width || vv >= c.height) continue;
+      if (!OrganizedCloud::valid(c.points[c.index(uu, vv)])) continue;
+      if (du * du + dv * dv < best_r2) best_r2 = du * du + dv * dv, best_u = uu, best_v = vv;
+    }
+  if (best_u < 0) return false;
+  if (picked_pixels_.size() >= 2) picked_pixels_.clear();
+  measurement_.add(c.points[c.index(best_u, best_v)].cast<double>());
+  picked_pixels_.push_back(QPoint(best_u, best_v));
+  update();
+  emit measurementChanged(measurement_.distance_m() ? QString::fromStdString(measurement_.label())
+                                                     : tr("first point picked"));
+  return true;
+}
+
+void DepthViewWidget::mousePressEvent(QMouseEvent* e) {
+  const QRect r = image_rect();
+  if (!measuring_ || e->button() != Qt::LeftButton || r.isEmpty() || !r.contains(e->pos()))
+    return QWidget::mousePressEvent(e);
+  pick_pixel((e->pos().x() - r.x()) * image_.width() / r.width(), (e->pos().y() - r.y()) * image_.height() / r.height());
 }
 
 QString DepthViewWidget::describe_pixel(int u, int v) const {

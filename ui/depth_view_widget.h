@@ -3,7 +3,9 @@
 // wall class. Hovering reports depth and plane id at the pixel under the cursor.
 #include <QImage>
 #include <QWidget>
+#include <vector>
 
+#include "ui/scene/measurement.h"
 #include "ui/scene/processed_frame.h"
 
 namespace tunnelmap::ui {
@@ -23,18 +25,33 @@ class DepthViewWidget : public QWidget {
   // "u 120, v 80: depth 1.234 m, plane 3 (left)" or empty outside the image.
   QString describe_pixel(int u, int v) const;
 
+  // Measure tool (View > Measure in 3D, shared with the 3D view): while on, a left click picks
+  // the 3D point of the clicked pixel (the nearest pixel with depth within 3 px); two picks
+  // give their distance in space, drawn over the image.
+  void set_measuring(bool on);
+  bool measuring() const { return measuring_; }
+  bool pick_pixel(int u, int v);  // what a click on pixel (u, v) does; false without depth
+  const scene::Measurement& measurement() const { return measurement_; }
+  void clear_measurement();
+  QPoint widget_point(int u, int v) const;  // the centre of pixel (u, v) on screen
+
  signals:
   void hovered(const QString& text);
+  void measurementChanged(const QString& text);  // "1234.5 mm", "first point picked", ""
 
  protected:
   void paintEvent(QPaintEvent*) override;
   void mouseMoveEvent(QMouseEvent* e) override;
+  void mousePressEvent(QMouseEvent* e) override;
 
  private:
   QRect image_rect() const;
 
   QImage image_;
   std::shared_ptr<const scene::ProcessedFrame> frame_;
+  bool measuring_ = false;
+  scene::Measurement measurement_;
+  std::vector<QPoint> picked_pixels_;  // (u, v) of each pick
 };
 
 }  // namespace tunnelmap::ui

@@ -3,6 +3,8 @@
 #include "core/report/json_numbers.h"
 #include "core/report/statistics.h"
 
+#include <algorithm>
+
 namespace tunnelmap::ui {
 
 FrameRecord FrameRecord::from(int index, const FrameResult& r, Method method, const std::string& source) {
@@ -40,21 +42,50 @@ RunningStats running_stats(const std::vector<FrameRecord>& records) {
   return s;
 }
 
-nlohmann::json results_document(const std::vector<FrameRecord>& records, const nlohmann::json& params,
-                                const std::string& input, const Dataset* dataset) {
+namespace {
+
+struct Group {
+  Method method;
+  int set;
+  bool operator==(const Group& o) const { return method == o.method && set == o.set; }
+};
+
+DetectionSummary group_summary(const std::vector<FrameRecord>& records, const Group& g, const Dataset* dataset) {
   DetectionSummary summary;
   if (dataset) {
     summary.gt_width_m = dataset->gt_width_m;
     summary.gt_height_m = dataset->gt_height_m;
   }
-  const Method method = records.empty() ? Method::Pgc : records.front().method;
-  nlohmann::json frames = nlohmann::json::array();
   for (const FrameRecord& r : records) {
+    if (!(Group{r.method, r.param_set} == g)) continue;
     // The row's timings: after a partial re-run they are the whole pipeline's (main_window.cpp).
     SummaryEntry entry = r.summary;
     const auto total = r.timings_ms.find("total");
     entry.total_ms = total != r.timings_ms.end() ? total->second : 0.0;
     summary.add(entry);
+  }
+  summary.finish();
+  return summary;
+}
+
+}  // namespace
+
+nlohmann::json results_document(const std::vector<FrameRecord>& records, const nlohmann::json& params,
+                                const std::string& input, const Dataset* dataset,
+                                const std::function<nlohmann::json(int)>& set_params) {
+  std::vector<Group> groups;
+  for (const FrameRecord& r : records)
+    if (std::find(groups.begin(), groups.end(), Group{r.method, r.param_set}) == groups.end())
+      groups.push_back({r.method, r.param_set});
+  Group main = groups.empty() ? Group{Method::Pgc, 0} : groups.front();
+  if (set_params)
+    for (const Group& g : groups)
+      if (set_params(g.set) == params) {
+        main = g;
+        break;
+      }
+  nlohmann::json frames = nlohmann::json::array();
+  for (const FrameRecord& r : records) {
     nlohmann::json f = r.result;
     if (f.is_null()) {  // a frame that could not be read: no result, only why
       f = {{"index", r.index}, {"detected", false}, {"status", r.status}};
@@ -63,12 +94,24 @@ nlohmann::json results_document(const std::vector<FrameRecord>& records, const n
       for (const auto& [stage, ms] : r.timings_ms) timings[stage] = round_to(ms, 1e-3);
       f["timings_ms"] = timings;
     }
-    if (r.method != method) f["method"] = method_name(r.method);
+    if (r.method != main.method) f["method"] = method_name(r.method);
+    if (groups.size() > 1) f["param_set"] = r.param_set;
     frames.push_back(std::move(f));
   }
-  summary.finish();
-  nlohmann::json doc = detection_document(params, frames, summary, input);
-  doc["method"] = method_name(method);
+  nlohmann::json main_params = params;
+  if (set_params && main.set > 0 && !set_params(main.set).is_null()) main_params = set_params(main.set);
+  nlohmann::json doc = detection_document(main_params, frames, group_summary(records, main, dataset), input);
+  doc["method"] = method_name(main.method);
+  if (groups.size() > 1) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const Group& g : groups) {
+      nlohmann::json entry = {{"method", method_name(g.method)}, {"param_set", g.set}};
+      if (set_params) entry["params"] = set_params(g.set);
+      entry["summary"] = group_summary(records, g, dataset).to_json();
+      all.push_back(std::move(entry));
+    }
+    doc["summaries"] = all;
+  }
   return doc;
 }
 

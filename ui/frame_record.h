@@ -2,6 +2,7 @@
 // One row of the results panel: what the pipeline reported for one frame, and that frame's
 // entry of a results document (the model `detect --json/--csv` writes, core/report).
 #include <QString>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -40,10 +41,15 @@ struct RunningStats {
 RunningStats running_stats(const std::vector<FrameRecord>& records);
 
 // The results document of the rows, as `detect --json` writes it for the same frames:
-// detection_document() with the rows' frame objects and summary; "method" is the first row's,
-// and a row run with another method carries its own "method". `dataset` (may be null) gives the
-// ground truth of the summary.
+// detection_document() with the rows' frame objects and summary. Rows of different methods or
+// parameter sets never share a summary: "method", "params" and "summary" are those of the main
+// group — the rows made with `params` (the current parameters, recognised through
+// `set_params(k)`, the parameters of set k), else the first row's method and set. A row of
+// another method carries its own "method"; with more than one group every row carries its
+// "param_set" and "summaries" lists each group's method, set, parameters and summary.
+// `dataset` (may be null) gives the ground truth of the summaries.
 nlohmann::json results_document(const std::vector<FrameRecord>& records, const nlohmann::json& params,
-                                const std::string& input, const Dataset* dataset);
+                                const std::string& input, const Dataset* dataset,
+                                const std::function<nlohmann::json(int set)>& set_params = {});
 
 }  // namespace tunnelmap::ui

@@ -13,6 +13,7 @@
 #include "core/mapping/station_frames.h"
 #include "core/tunnel/tunnel_options.h"
 #include "ui/cross_section_panel.h"
+#include "ui/depth_view_widget.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
@@ -70,9 +71,16 @@ void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
   measure->setShortcut(QKeySequence("M"));
   measure->setStatusTip(tr("Click two points in the 3D view to measure their distance"));
   connect(measure, &QAction::toggled, view3d_, &View3DWidget::set_measuring);
-  view->addAction(tr("C&lear measurement"), view3d_, &View3DWidget::clear_measurement, QKeySequence("Esc"));
+  connect(measure, &QAction::toggled, depth_view_, &DepthViewWidget::set_measuring);
+  view->addAction(tr("C&lear measurement"), this, [this] {
+    view3d_->clear_measurement();
+    depth_view_->clear_measurement();
+  }, QKeySequence("Esc"));
   connect(view3d_, &View3DWidget::measurementChanged, this, [this](const QString& text) {
     if (!text.isEmpty()) status_label_->setText(tr("3D measurement: %1").arg(text));
+  });
+  connect(depth_view_, &DepthViewWidget::measurementChanged, this, [this](const QString& text) {
+    if (!text.isEmpty()) status_label_->setText(tr("2D view measurement: %1").arg(text));
   });
   view->addAction(cross_section_dock_->toggleViewAction());
   view->addAction(profile_dock_->toggleViewAction());
@@ -81,7 +89,10 @@ void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
 void MainWindow::review_frame_shown() {
   if (!current_ || !cross_section_) return;
   // A measurement belongs to the frame it was picked in.
-  if (review_frame_ != frame_index_) view3d_->clear_measurement();
+  if (review_frame_ != frame_index_) {
+    view3d_->clear_measurement();
+    depth_view_->clear_measurement();
+  }
   review_frame_ = frame_index_;
   const Parameters& p = params_->parameters();
   const double w = p.get(tunnel_keys::design_width_m), h = p.get(tunnel_keys::design_height_m);

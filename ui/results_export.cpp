@@ -19,8 +19,8 @@ namespace tunnelmap::ui {
 
 void write_results_json(const std::string& path, const std::string& input,
                         const std::vector<FrameRecord>& records, const nlohmann::json& params,
-                        const Dataset* dataset) {
-  write_detection_json(path, results_document(records, params, input, dataset));
+                        const Dataset* dataset, const std::function<nlohmann::json(int)>& set_params) {
+  write_detection_json(path, results_document(records, params, input, dataset, set_params));
 }
 
 void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records) {
@@ -56,7 +56,8 @@ bool MainWindow::export_planes_ply(const QString& path) {
 bool MainWindow::export_results_json(const QString& path) {
   try {
     write_results_json(path.toStdString(), input_path_.toStdString(), results_->records(),
-                       params_->parameters().to_json(), source_ ? source_->dataset() : nullptr);
+                       params_->parameters().to_json(), source_ ? source_->dataset() : nullptr,
+                       [this](int set) { return results_->parameter_set_json(set); });
   } catch (const std::exception& e) {
     show_error(QString::fromStdString(e.what()));
     return false;

@@ -31,6 +31,9 @@
 #include <QUndoStack>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QtTest/QtTest>
+#include <QFile>
+#include <set>
+#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
 
@@ -403,6 +406,25 @@ class GuiReviewTest : public QObject {
     qInfo("after the cancelled Qhull run (%d Qhull rows):\n%s", qhull, qPrintable(summary));
     QVERIFY2(summary.contains("Qhull, params #2: ") && summary.contains("PG&C, params #1: "), qPrintable(summary));
     for (const QString& line : summary.split('\n')) QVERIFY(line.count("params #") == 1);
+
+    // The exported results never mix them either: the summary is the current group's (Qhull,
+    // set #2), every row names its set, and "summaries" gives each group its own.
+    const QString json = dir_.filePath("mixed.json");
+    QVERIFY(w.export_results_json(json));
+    QFile file(json);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const auto doc = nlohmann::json::parse(file.readAll().toStdString());
+    QCOMPARE(QString::fromStdString(doc["method"].get<std::string>()), QString("qhull"));
+    QCOMPARE(doc["summary"]["frames"].get<int>(), qhull);
+    std::set<std::pair<int, int>> groups;  // (method, set) of the rows: PG&C #1 and Qhull #2 here
+    for (const auto& r : w.results_panel()->records()) groups.insert({static_cast<int>(r.method), r.param_set});
+    QVERIFY(groups.size() >= 2);
+    QCOMPARE(doc["summaries"].size(), groups.size());
+    int rows = 0;
+    for (const auto& g : doc["summaries"]) rows += g["summary"]["frames"].get<int>();
+    QCOMPARE(rows, kFrames);
+    for (const auto& f : doc["frames"]) QVERIFY(f.contains("param_set"));
+    QCOMPARE(doc["params"]["grow.angle_deg"].get<double>(), angle->value());
   }
 
   // The loaded preset is named in the title and status bar; the simulated lab dataset names its

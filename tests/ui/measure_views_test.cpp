@@ -2,7 +2,8 @@
 // draws the fitted rectangle where the walls are, the dashed design rectangle, a caption with
 // the deviation, measures between two clicked points, and its slider walks the frame's visible
 // stations. The profile plot draws stations beyond tolerance red and selects the clicked one.
-// The 3D view's measure mode picks two wall points and measures the width between them. The
+// The 3D view's and the 2D depth view's measure modes pick two wall points and measure the
+// width between them. The
 // main window maps a posed walk and moves to a clicked station.
 // TUNNELMAP_GUI_SHOT_DIR=DIR keeps screenshots of both.
 #include <QApplication>
@@ -17,7 +18,10 @@
 #include "ui/cross_section_panel.h"
 #include "ui/profile_plot.h"
 #include "ui/view3d_widget.h"
+#include "ui/depth_view_widget.h"
 #include "ui/main_window.h"
+#include <QFile>
+#include <QImage>
 #include <QProcess>
 #include <QSettings>
 #include <QStandardPaths>
@@ -259,6 +263,48 @@ class View3DMeasureTest : public QObject {
   }
 };
 
+class DepthViewMeasureTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void twoClicksOnTheDepthImageMeasureInSpace() {
+    tunnelmap::ui::DepthViewWidget view;
+    view.resize(640, 480);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const auto pf = tunnel();
+    view.show_frame(pf);
+    // The pixels of a left-wall and a right-wall point 1.5 m ahead.
+    auto pixel_of = [&](const Eigen::Vector3d& target) {
+      const auto& c = pf->result.cloud;
+      std::size_t best = 0;
+      double best_d = 1e9;
+      for (std::size_t i = 0; i < c.points.size(); ++i)
+        if (tunnelmap::OrganizedCloud::valid(c.points[i]) && (c.points[i].cast<double>() - target).norm() < best_d)
+          best_d = (c.points[i].cast<double>() - target).norm(), best = i;
+      return QPoint(static_cast<int>(best % c.width), static_cast<int>(best / c.width));
+    };
+    const QPoint l = pixel_of({-0.5, 0.0, 1.5}), r = pixel_of({0.5, 0.0, 1.5});
+    QSignalSpy changed(&view, &tunnelmap::ui::DepthViewWidget::measurementChanged);
+    QTest::mouseClick(&view, Qt::LeftButton, {}, view.widget_point(l.x(), l.y()));
+    QVERIFY(view.measurement().picks.empty());  // not measuring: a click picks nothing
+    view.set_measuring(true);
+    QTest::mouseClick(&view, Qt::LeftButton, {}, view.widget_point(l.x(), l.y()));
+    QTest::mouseClick(&view, Qt::LeftButton, {}, view.widget_point(r.x(), r.y()));
+    const auto d = view.measurement().distance_m();
+    QVERIFY(d.has_value());
+    QVERIFY2(std::abs(*d - 1.0) < 0.02, qPrintable(QString::number(*d)));
+    QCOMPARE(changed.count(), 2);
+    // The segment is drawn over the image in white.
+    const QImage img = view.grab().toImage();
+    const QPoint mid = (view.widget_point(l.x(), l.y()) + view.widget_point(r.x(), r.y())) / 2;
+    const QRgb c = img.pixel(mid);
+    QVERIFY2(qRed(c) > 240 && qGreen(c) > 240 && qBlue(c) > 240, qPrintable(QColor(c).name()));
+    view.clear_measurement();
+    QVERIFY(view.measurement().picks.empty());
+  }
+};
+
 // The main window's review docks on a simulated posed walk: Processing > Map tunnel fills the
 // profile; clicking a station shows the frame that sees it best and cuts the cross-section
 // there, where the fitted width is the map's width at that station.
@@ -322,6 +368,29 @@ class MapReviewTest : public QObject {
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
   }
 
+  // The command line: --map --station S waits for the map and the station's frame, then grabs.
+  void commandLineMapStationScreenshot() {
+    const QString shot = dir_.filePath("review.png");
+    QProcess gui;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("XDG_CONFIG_HOME", dir_.filePath("config"));
+    gui.setProcessEnvironment(env);
+    gui.start(TUNNELMAP_GUI_PATH, {walk_, "--map", "--station", "3.0", "--size", "1400x880", "--screenshot", shot, "--exit"});
+    QVERIFY(gui.waitForFinished(120000));
+    QCOMPARE(gui.exitCode(), 0);
+    QCOMPARE(QImage(shot).size(), QSize(1400, 880));
+    // A plain frame has no poses to map: exit 3, one line naming it.
+    QProcess bad;
+    bad.setProcessEnvironment(env);
+    bad.start(TUNNELMAP_GUI_PATH, {QString(TUNNELMAP_SOURCE_DIR) + "/resources/sample/lab/depth/000000.png", "--map",
+                                   "--screenshot", dir_.filePath("no.png"), "--exit"});
+    QVERIFY(bad.waitForFinished(60000));
+    QCOMPARE(bad.exitCode(), 3);
+    const QString err = QString::fromUtf8(bad.readAllStandardError());
+    QVERIFY2(err.contains("000000.png") && err.contains("needs a posed dataset"), qPrintable(err));
+    QVERIFY(!QFile::exists(dir_.filePath("no.png")));
+  }
+
   void mapTunnelOnAPlainFrameSaysWhy() {
     tunnelmap::ui::MainWindow w;
     w.suppress_dialogs = true;
@@ -344,10 +413,12 @@ int main(int argc, char** argv) {
   CrossSectionTest cross_section;
   ProfilePlotTest profile;
   View3DMeasureTest measure;
+  DepthViewMeasureTest depth;
   MapReviewTest review;
   int failures = QTest::qExec(&cross_section, argc, argv);
   failures += QTest::qExec(&profile, argc, argv);
   failures += QTest::qExec(&measure, argc, argv);
+  failures += QTest::qExec(&depth, argc, argv);
   failures += QTest::qExec(&review, argc, argv);
   return failures;
 }
