@@ -18,7 +18,7 @@ struct FrameScratch {
 
   FrameScratch() = default;
   // Buffers, not a value: a copy or a move starts empty and an assignment keeps the target's own
-  // buffers. Copying a FrameResult (the GUI keeps copies) so copies no megabytes of scratch, and
+  // buffers. So copying a FrameResult (the GUI keeps copies) copies no megabytes of scratch, and
   // a result assigned into keeps its buffers for its next frame.
   FrameScratch(const FrameScratch&) {}
   FrameScratch(FrameScratch&&) noexcept {}

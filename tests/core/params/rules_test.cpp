@@ -53,7 +53,11 @@ TEST(ParameterRules, SetChecksAgainstTheCurrentOtherValue) {
       {"cloud.min_range_m", "cloud.max_range_m", 1.0, 0.8, 1.0, 0.7},
       {"tunnel.width_min_m", "tunnel.width_max_m", 3.0, 0.3, 3.5, 0.2},
       {"tunnel.height_min_m", "tunnel.height_max_m", 3.0, 0.3, 3.0, 0.3}};
-  for (const auto& [min_key, max_key, max, min, bad_min, bad_max] : pairs) {
+  for (const auto& pair : pairs) {
+    // Named copies, not structured bindings: lambdas may not capture those in C++17 (clang).
+    const std::string min_key = std::get<0>(pair), max_key = std::get<1>(pair);
+    const double max = std::get<2>(pair), min = std::get<3>(pair), bad_min = std::get<4>(pair),
+                 bad_max = std::get<5>(pair);
     p.set(max_key, max);
     p.set(min_key, min);
     const Parameters before = p;
