@@ -115,11 +115,12 @@ void MainWindow::map_tunnel() {
     emit tunnelMapped(false);
     return;
   }
-  map_running_ = true;
+  // One background job at a time (the window waits for it on close): sequence, fusion or map.
+  map_running_ = sequence_running_ = true;
   status_label_->setText(tr("Mapping the tunnel over %1 frame(s)…").arg(ds->frames.size()));
   auto source = source_;
   Pipeline pipeline(params_->parameters());
-  (void)QtConcurrent::run([this, source, pipeline]() mutable {
+  sequence_future_ = QtConcurrent::run([this, source, pipeline]() mutable {
     auto result = std::make_shared<DatasetMapping>();
     std::vector<Eigen::Isometry3d> poses;
     QString error;
@@ -130,7 +131,7 @@ void MainWindow::map_tunnel() {
       error = QString::fromStdString(e.what());
     }
     QMetaObject::invokeMethod(this, [this, source, result, poses, error] {
-      map_running_ = false;
+      map_running_ = sequence_running_ = false;
       if (!error.isEmpty()) {
         show_error(error);
         return emit tunnelMapped(false);
