@@ -38,13 +38,15 @@ void LiveView::stop() {
   timer_.stop();
   watcher_.waitForFinished();
   busy_ = false;
-  recording_.reset();  // unfinished: its temporary file is removed
-  grabber_.reset();    // stops streaming and joins the reader
+  if (recording_ && grabber_)  // unfinished: its temporary file is removed (streams stopped, see OniRecording)
+    grabber_->with_streams_paused([&] { recording_.reset(); });
+  recording_.reset();
+  grabber_.reset();  // stops streaming and joins the reader
 }
 
 void LiveView::start_recording(const QString& path) {
   if (!grabber_) throw std::runtime_error("no live device: start the live view first");
-  recording_.reset();
+  if (recording_) grabber_->with_streams_paused([&] { recording_.reset(); });
   recording_ = std::make_unique<openni2::OniRecording>(grabber_->device(), path.toStdString());
   recording_start_ = grabber_->stats().received;
 }
@@ -57,7 +59,8 @@ int LiveView::stop_recording() {
   if (!recording_) return 0;
   const int frames = frames_recorded();
   auto rec = std::move(recording_);
-  rec->finish();
+  if (grabber_) grabber_->with_streams_paused([&] { rec->finish(); });  // see OniRecording
+  else rec->finish();
   return frames;
 }
 

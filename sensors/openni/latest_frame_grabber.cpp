@@ -1,5 +1,7 @@
 #include "sensors/openni/latest_frame_grabber.h"
 
+#include <exception>
+
 #include "core/util/error.h"
 
 namespace tunnelmap::openni2 {
@@ -14,6 +16,7 @@ LatestFrameGrabber::~LatestFrameGrabber() {
     std::lock_guard<std::mutex> lock(mutex_);
     quit_ = true;
   }
+  cv_.notify_all();  // a parked reader wakes up to quit
   thread_.join();
   device_->stop();
 }
@@ -22,7 +25,13 @@ void LatestFrameGrabber::run() {
   std::uint64_t sequence = 0;
   for (;;) {
     {
-      std::lock_guard<std::mutex> lock(mutex_);
+      std::unique_lock<std::mutex> lock(mutex_);
+      if (pause_) {
+        parked_ = true;
+        cv_.notify_all();
+        cv_.wait(lock, [&] { return !pause_ || quit_; });
+        parked_ = false;
+      }
       if (quit_) return;
     }
     try {
@@ -41,6 +50,33 @@ void LatestFrameGrabber::run() {
       return;
     }
   }
+}
+
+void LatestFrameGrabber::with_streams_paused(const std::function<void()>& fn) {
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    pause_ = true;
+    // The reader parks within one read (200 ms), or has already stopped on an error.
+    cv_.wait(lock, [&] { return parked_ || !error_.empty(); });
+  }
+  device_->stop();
+  std::exception_ptr failure;
+  try {
+    fn();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  try {
+    device_->start();
+  } catch (...) {  // the reader's next read retries and reports it
+    if (!failure) failure = std::current_exception();
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pause_ = false;
+  }
+  cv_.notify_all();
+  if (failure) std::rethrow_exception(failure);
 }
 
 std::optional<GrabbedFrame> LatestFrameGrabber::take_latest(int timeout_ms) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -34,6 +35,9 @@ class LatestFrameGrabber {
   // device's error (e.g. "device disconnected after N frames") once no frame is left.
   std::optional<GrabbedFrame> take_latest(int timeout_ms);
   GrabberStats stats() const;
+  // Parks the reader, stops the streams, runs `fn`, then streams again (e.g. to finish an
+  // OniRecording safely, see oni_recording.h). Rethrows what `fn` throws, after restarting.
+  void with_streams_paused(const std::function<void()>& fn);
   LiveDevice& device() { return *device_; }  // e.g. to attach an OniRecording
 
  private:
@@ -46,6 +50,7 @@ class LatestFrameGrabber {
   std::string error_file_;
   GrabberStats stats_;
   bool quit_ = false;
+  bool pause_ = false, parked_ = false;  // with_streams_paused: asked, and the reader is waiting
   std::thread thread_;
 };
 

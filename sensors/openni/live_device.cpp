@@ -81,8 +81,10 @@ void LiveDevice::start() {
 
 void LiveDevice::stop() {
   if (!started_) return;
-  if (color_.isValid()) color_.stop();
+  // Depth first: a frame arriving meanwhile then adds at most a colour frame without its depth
+  // frame (ignored on playback), never a depth frame without its own colour.
   depth_.stop();
+  if (color_.isValid()) color_.stop();
   started_ = false;
 }
 

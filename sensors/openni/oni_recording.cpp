@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <exception>
 #include <filesystem>
 
 #include "core/util/atomic_file.h"
@@ -59,6 +60,7 @@ RecordResult record_oni(const std::string& uri, int frames, const std::string& o
   {
     OniRecording recording(device, out_path);  // attached before the streams start: nothing missed
     device.start();
+    std::exception_ptr nothing_recorded;
     try {
       while (result.frames < frames) {
         device.read();
@@ -68,9 +70,13 @@ RecordResult record_oni(const std::string& uri, int frames, const std::string& o
     } catch (const InputError& e) {
       result.disconnected = device.disconnected();
       failure = e.problem();
-      if (result.frames == 0) throw;  // nothing worth keeping
+      if (result.frames == 0) nothing_recorded = std::current_exception();  // nothing worth keeping
+    } catch (...) {
+      device.stop();  // before the recording is dropped (see OniRecording)
+      throw;
     }
     device.stop();
+    if (nothing_recorded) std::rethrow_exception(nothing_recorded);
     recording.finish();
   }
   if (!failure.empty()) {

@@ -13,6 +13,9 @@ namespace tunnelmap::openni2 {
 
 // Records the device's depth (+ colour) streams from construction until finish(). Used by the
 // CLI (record_oni) and by the GUI's start/stop recording while the live view keeps reading.
+// Finish or drop it only while the device's streams are stopped: OpenNI2 locks a stream and its
+// recorder in one order when a frame arrives and in the other when the recorder is destroyed,
+// so a frame arriving then can deadlock both (LatestFrameGrabber::with_streams_paused).
 class OniRecording {
  public:
   // InputError naming `out_path` when it cannot be written or OpenNI2 refuses to record.

@@ -152,9 +152,19 @@ class SimDevice;
 
 class SimStream : public oni::driver::StreamBase {
  public:
-  SimStream(OniSensorType type, const Intrinsics& K) : type_(type), K_(K) {}
+  // `emit_mutex` is the device's: held by its frame thread while it hands frames over.
+  SimStream(OniSensorType type, const Intrinsics& K, std::mutex& emit_mutex)
+      : type_(type), K_(K), emit_mutex_(emit_mutex) {}
   OniStatus start() override { running_ = true; return ONI_STATUS_OK; }
-  void stop() override { running_ = false; }
+  // Returns only once no frame of this stream is being handed to OpenNI2, so that after a
+  // client's VideoStream::stop no frame reaches its Recorder. OpenNI2 takes the stream's and the
+  // recorder's locks in opposite orders when a frame arrives (stream, then recorder) and when a
+  // recorder is destroyed (recorder, then stream): a frame in flight while a recording finishes
+  // can deadlock both threads (a recording test hung for 120 s on a loaded machine).
+  void stop() override {
+    std::lock_guard<std::mutex> lock(emit_mutex_);
+    running_ = false;
+  }
   bool running() const { return running_; }
   OniSensorType type() const { return type_; }
 
@@ -234,6 +244,7 @@ class SimStream : public oni::driver::StreamBase {
   }
   OniSensorType type_;
   Intrinsics K_;
+  std::mutex& emit_mutex_;
   std::atomic<bool> running_{false};
 };
 
@@ -266,7 +277,7 @@ class SimDevice : public oni::driver::DeviceBase {
 
   oni::driver::StreamBase* createStream(OniSensorType type) override {
     if (type != ONI_SENSOR_DEPTH && !(type == ONI_SENSOR_COLOR && options_.color)) return nullptr;
-    auto* s = new SimStream(type, Intrinsics::primesense_vga());
+    auto* s = new SimStream(type, Intrinsics::primesense_vga(), mutex_);
     std::lock_guard<std::mutex> lock(mutex_);
     streams_.push_back(s);
     return s;

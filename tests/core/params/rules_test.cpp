@@ -117,7 +117,7 @@ TEST(ParameterRules, ASetListIsCheckedWhenWhole) {
 
 TEST(ParameterRules, CliSetAndPresetsEnforceThem) {
   // --set: exit 2 with one line; a preset: exit 3 naming the file.
-  for (const std::string& set :
+  for (const char* set :
        {"--set cloud.min_range_m=1 --set cloud.max_range_m=0.8", "--set tunnel.width_min_m=3.5",
         "--set tunnel.height_max_m=0.2", "--set grow.neighbourhood_n=4"}) {
     const auto r = run_cli("detect " + kSample + " -q " + set);
