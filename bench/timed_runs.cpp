@@ -32,7 +32,10 @@ void time_runs(const std::string& frame, const char* method, int reps, int warmu
 }
 }  // namespace
 
-int print_timed_runs(int reps, int warmup) {
+int print_timed_runs(int reps, int warmup, const std::string& methods) {
+  const auto wanted = [&](const std::string& m) {
+    return ("," + methods + ",").find("," + m + ",") != std::string::npos;
+  };
   const Parameters p;
   const CloudOptions co = cloud_options(p);
   const NormalOptions no = normal_options(p);
@@ -43,21 +46,26 @@ int print_timed_runs(int reps, int warmup) {
     OrganizedCloud cloud;
     PlaneSegments planes;
     FrameScratch scratch;  // reused across runs, as Pipeline::run does
-    time_runs(nf.name, "tunnelmap", reps, warmup, [&] {
+    const auto extract = [&] {
       build_cloud(nf.frame, co, cloud, scratch.cloud);
       estimate_normals(no, cloud, scratch.normals);
       extract_planes(cloud, go, planes, scratch.planes);
       return static_cast<int>(planes.planes.size());
-    });
+    };
+    if (wanted("tunnelmap")) time_runs(nf.name, "tunnelmap", reps, warmup, extract);
+    else extract();  // the PCL peer starts from this cloud
     // BM_OpenCvTotalWithCloud_FALS: depthTo3d + RgbdNormals + RgbdPlane (tuned settings).
-    OpenCvPeer cv_peer(nf.frame, co, tuned_opencv_settings(CvNormalsMethod::Fals));
-    time_runs(nf.name, "opencv", reps, warmup, [&] {
-      cv_peer.depth_to_3d();
-      cv_peer.estimate_normals();
-      cv_peer.find_planes();
-      return cv_peer.plane_count();
-    });
+    if (wanted("opencv")) {
+      OpenCvPeer cv_peer(nf.frame, co, tuned_opencv_settings(CvNormalsMethod::Fals));
+      time_runs(nf.name, "opencv", reps, warmup, [&] {
+        cv_peer.depth_to_3d();
+        cv_peer.estimate_normals();
+        cv_peer.find_planes();
+        return cv_peer.plane_count();
+      });
+    }
     // BM_PclTotal: IINE + OMPS from the organised cloud (PCL has no depth-to-cloud step).
+    if (!wanted("pcl")) continue;
     PclPeer pcl_peer(tuned_pcl_settings());
     pcl_peer.set_cloud(cloud);
     time_runs(nf.name, "pcl", reps, warmup, [&] {

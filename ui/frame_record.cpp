@@ -23,23 +23,14 @@ FrameRecord FrameRecord::from(int index, const FrameResult& r, Method method, co
   return f;
 }
 
-RunningStats running_stats(const std::vector<FrameRecord>& records) {
-  RunningStats s;
-  s.frames = static_cast<int>(records.size());
-  std::vector<double> widths, heights;
-  for (const auto& r : records) {
-    if (!r.detected) continue;
-    widths.push_back(r.width_m);
-    heights.push_back(r.height_m);
-  }
-  s.detected = static_cast<int>(widths.size());
-  // The core's statistics (sample sigma, as in the paper's Table 1), as `detect` prints them.
-  const MeanSigma w = mean_sigma(widths), h = mean_sigma(heights);
-  s.width_mean = w.mean;
-  s.width_std = w.sigma;
-  s.height_mean = h.mean;
-  s.height_std = h.sigma;
-  return s;
+DetectionSummary summary_of(const std::vector<FrameRecord>& records, std::optional<double> gt_width_m,
+                            std::optional<double> gt_height_m) {
+  DetectionSummary summary;
+  summary.gt_width_m = gt_width_m;
+  summary.gt_height_m = gt_height_m;
+  for (const FrameRecord& r : records) summary.add(r.summary);
+  summary.finish();
+  return summary;
 }
 
 namespace {

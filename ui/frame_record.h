@@ -32,13 +32,11 @@ struct FrameRecord {
                           const std::string& source = {});
 };
 
-// Mean and sample standard deviation (core/report/statistics.h) of width/height over the
-// frames with both known (paper, Table 1).
-struct RunningStats {
-  int detected = 0, frames = 0;
-  double width_mean = 0, width_std = 0, height_mean = 0, height_std = 0;
-};
-RunningStats running_stats(const std::vector<FrameRecord>& records);
+// The summary `detect` prints for these rows (core/report/results_json.h: the width and height
+// measured in the detected frames, never inferred ones; sample sigma; errors against the ground
+// truth when given).
+DetectionSummary summary_of(const std::vector<FrameRecord>& records, std::optional<double> gt_width_m = {},
+                            std::optional<double> gt_height_m = {});
 
 // The results document of the rows, as `detect --json` writes it for the same frames:
 // detection_document() with the rows' frame objects and summary. Rows of different methods or

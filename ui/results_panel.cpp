@@ -121,31 +121,24 @@ QString ResultsPanel::summary_text() const {
     std::vector<FrameRecord> group;
     for (const auto& r : records_)
       if (r.method == method && r.param_set == set) group.push_back(r);
-    const RunningStats s = running_stats(group);
+    const DetectionSummary s = summary_of(group, gt_width_m_, gt_height_m_);
     QString line = tr("%1, params #%2: ").arg(QString::fromUtf8(method_display_name(method))).arg(set);
     if (s.detected == 0) {
       lines << line + tr("%1 frame(s), no tunnel detected").arg(s.frames);
       continue;
     }
+    // As `detect` prints it: means over the measured widths and heights only.
     line += tr("%1/%2 detected — width %3 (%4) m, height %5 (%6) m")
                 .arg(s.detected)
                 .arg(s.frames)
-                .arg(s.width_mean, 0, 'f', 3)
-                .arg(s.width_std, 0, 'f', 3)
-                .arg(s.height_mean, 0, 'f', 3)
-                .arg(s.height_std, 0, 'f', 3);
-    if (gt_width_m_ && gt_height_m_) {
-      // As the CLI's detect summary: mean absolute error over the detected frames.
-      double ew = 0, eh = 0;
-      for (const auto& r : group)
-        if (r.detected) {
-          ew += std::abs(r.width_m - *gt_width_m_);
-          eh += std::abs(r.height_m - *gt_height_m_);
-        }
+                .arg(s.width_mean_m, 0, 'f', 3)
+                .arg(s.width_std_m, 0, 'f', 3)
+                .arg(s.height_mean_m, 0, 'f', 3)
+                .arg(s.height_std_m, 0, 'f', 3);
+    if (s.gt_width_m && s.gt_height_m)
       line += tr(", mean abs error %1 / %2 mm vs ground truth")
-                  .arg(ew / s.detected * 1000, 0, 'f', 1)
-                  .arg(eh / s.detected * 1000, 0, 'f', 1);
-    }
+                  .arg(s.width_abs_error_mean_m * 1000, 0, 'f', 1)
+                  .arg(s.height_abs_error_mean_m * 1000, 0, 'f', 1);
     lines << line;
   }
   return lines.join('\n');
