@@ -38,7 +38,7 @@ namespace tunnelmap::ui {
 struct SessionState {
   std::map<QString, Intrinsics> intrinsics;  // absolute input path -> given this run
   std::optional<SessionCamera> pending_camera;  // applied once the next frame is shown
-  std::optional<scene::Measurement> pending_measurement;  // likewise (a session's)
+  std::optional<std::vector<scene::Measurement>> pending_measurements;  // likewise (a session's)
   QString preset_path;                          // of the session that set preset_name_
   QString panel_input;                          // input the intrinsics panel was filled for
   QDockWidget* dock = nullptr;
@@ -147,8 +147,8 @@ bool MainWindow::save_session(const QString& path) {
     for (scene::Layer l : scene::all_layers())
       if (view3d_->scene().layer_visible(l)) s.layers->push_back(scene::layer_name(l));
     s.frame = frame_index_ + 1;
-    const scene::Measurement& m = view3d_->scene().measurement();
-    if (!m.picks.empty()) {
+    for (const scene::Measurement& m : view3d_->scene().measurements()) {
+      if (m.picks.empty()) continue;
       s.measurements.emplace_back();
       for (const Eigen::Vector3d& p : m.picks) s.measurements.back().push_back({p.x(), p.y(), p.z()});
     }
@@ -210,10 +210,12 @@ bool MainWindow::open_session(const QString& path) {
   }
   select_frame(s.frame - 1);
   session_->pending_camera = s.camera;
-  scene::Measurement measurement;  // the session's first (the 3D view shows one at a time)
-  if (!s.measurements.empty())
-    for (const auto& p : s.measurements.front()) measurement.add(Eigen::Vector3d(p[0], p[1], p[2]));
-  session_->pending_measurement = measurement;
+  std::vector<scene::Measurement> measurements;  // each as saved, one or two points
+  for (const auto& saved : s.measurements) {
+    measurements.emplace_back();
+    for (const auto& p : saved) measurements.back().add(Eigen::Vector3d(p[0], p[1], p[2]));
+  }
+  session_->pending_measurements = measurements;
   if (s.camera) apply_camera(view3d_->scene().renderer(), *s.camera);  // again after the frame
   update_preset_status();
   statusBar()->showMessage(tr("Opened review session %1").arg(path), 5000);
@@ -374,11 +376,11 @@ void MainWindow::build_session_actions(QMenu* file) {
 
   connect(this, &MainWindow::frameShown, this, [this] {
     // Once the requested frame is shown (a measurement belongs to its frame).
-    if ((session_->pending_camera || session_->pending_measurement) && last_.frame_index == frame_index_) {
+    if ((session_->pending_camera || session_->pending_measurements) && last_.frame_index == frame_index_) {
       if (session_->pending_camera) apply_camera(view3d_->scene().renderer(), *session_->pending_camera);
-      if (session_->pending_measurement) view3d_->scene().set_measurement(*session_->pending_measurement);
+      if (session_->pending_measurements) view3d_->scene().set_measurements(*session_->pending_measurements);
       session_->pending_camera.reset();
-      session_->pending_measurement.reset();
+      session_->pending_measurements.reset();
       view3d_->renderWindow()->Render();
       view3d_->update();
     }

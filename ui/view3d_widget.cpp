@@ -92,8 +92,8 @@ void View3DWidget::set_measuring(bool on) {
 }
 
 void View3DWidget::clear_measurement() {
-  if (scene_.measurement().picks.empty()) return;
-  scene_.set_measurement(scene::Measurement());
+  if (scene_.measurements().empty()) return;
+  scene_.set_measurements({});
   renderWindow()->Render();
   update();
   emit measurementChanged(QString());

@@ -128,10 +128,12 @@ class GuiSessionTest : public QObject {
     cam->Dolly(1.3);
     cam->SetViewAngle(24.0);
     const auto saved_position = camera_position(w);
-    tunnelmap::scene::Measurement measured;  // as two clicks of the measure tool give
+    tunnelmap::scene::Measurement measured, second;  // as two pairs of clicks of the measure tool give
     measured.add(Eigen::Vector3d(-0.41, 0.2, 1.5));
     measured.add(Eigen::Vector3d(0.40, 0.25, 1.6));
-    w.view3d()->scene().set_measurement(measured);
+    second.add(Eigen::Vector3d(0.0, -0.6, 1.4));
+    second.add(Eigen::Vector3d(0.0, 0.62, 1.45));
+    w.view3d()->scene().set_measurements({measured, second});
     const QString session = dir_.filePath("review.json");
     // Through File > Save review session… (the dialog replaced; the suffix is added).
     w.choose_save_path = [&](const QString&, const QString&, const QString&) { return dir_.filePath("review"); };
@@ -148,8 +150,9 @@ class GuiSessionTest : public QObject {
     QCOMPARE(j["frame"].get<int>(), 2);  // 1-based, as the timeline shows it
     QCOMPARE(j["params"]["grow.angle_deg"].get<double>(), 2.5);
     QCOMPARE(j["camera"]["view_angle"].get<double>(), 24.0);
-    QCOMPARE(j["measurements"].size(), std::size_t(1));
+    QCOMPARE(j["measurements"].size(), std::size_t(2));
     QCOMPARE(j["measurements"][0]["points"][1][0].get<double>(), 0.40);
+    QCOMPARE(j["measurements"][1]["points"][1][1].get<double>(), 0.62);
     QVERIFY(std::abs(j["measurements"][0]["distance_m"].get<double>() - *measured.distance_m()) < 1e-12);
     const auto layers = j["layers"].get<std::vector<std::string>>();
     QVERIFY(std::find(layers.begin(), layers.end(), "planes") == layers.end());
@@ -187,9 +190,14 @@ class GuiSessionTest : public QObject {
     const double moved = distance(camera_position(w), saved_position);
     QVERIFY2(moved < 1e-6, qPrintable(QString("camera %1 m from the saved position").arg(moved)));
     QCOMPARE(w.view3d()->scene().renderer()->GetActiveCamera()->GetViewAngle(), 24.0);
-    const auto& picks = w.view3d()->scene().measurement().picks;
-    QCOMPARE(picks.size(), std::size_t(2));
-    QVERIFY((picks[0] - measured.picks[0]).norm() < 1e-12 && (picks[1] - measured.picks[1]).norm() < 1e-12);
+    // Both measurements come back, in order.
+    const auto& restored = w.view3d()->scene().measurements();
+    QCOMPARE(restored.size(), std::size_t(2));
+    for (std::size_t k = 0; k < 2; ++k) {
+      const auto& want = k == 0 ? measured : second;
+      QCOMPARE(restored[k].picks.size(), std::size_t(2));
+      QVERIFY((restored[k].picks[0] - want.picks[0]).norm() < 1e-12 && (restored[k].picks[1] - want.picks[1]).norm() < 1e-12);
+    }
     // The View menu's layer checkboxes follow.
     for (QAction* a : w.findChildren<QAction*>())
       if (a->isCheckable() && a->text() == QObject::tr(tunnelmap::scene::layer_title(Layer::Planes)))

@@ -255,6 +255,13 @@ class View3DMeasureTest : public QObject {
     QVERIFY2(std::abs(*d - 1.0) < 0.02, qPrintable(QString::number(*d)));
     QCOMPARE(changed.count(), 2);
     QVERIFY(changed.last().at(0).toString().endsWith(" mm"));
+    // A second distance: the first stays drawn beside it.
+    QTest::mouseClick(&view, Qt::LeftButton, {}, pixel_of({-0.5, 0.25, 1.2}));
+    QTest::mouseClick(&view, Qt::LeftButton, {}, pixel_of({0.5, 0.25, 1.2}));
+    QCOMPARE(int(view.scene().measurements().size()), 2);
+    QVERIFY(std::abs(*view.scene().measurements().front().distance_m() - *d) < 1e-12);
+    QVERIFY(view.scene().measurement().distance_m().has_value());
+    QCOMPARE(changed.count(), 4);
     const QImage shot = view.grabFramebuffer();
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) shot.save(QString(dir) + "/measure3d.png");
     view.clear_measurement();

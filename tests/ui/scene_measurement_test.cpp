@@ -1,6 +1,6 @@
 // Picking and measuring in the 3D scene (OSMesa, no DISPLAY): a pick at a cloud point's screen
 // position returns that point, two picks across the tunnel measure its width, the measurement
-// is drawn in its own colour, and a third pick starts again.
+// is drawn in its own colour, and a third pick starts another measurement beside the first.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,7 +70,7 @@ TEST(SceneMeasurement, TwoPicksAcrossTheTunnelMeasureItsWidth) {
   EXPECT_GT(white_pixels(after), 200);  // the picks, the segment and its label
 
   // Nothing drawn under the cursor (the measurement cleared too): no pick.
-  sc.set_measurement(scene::Measurement());
+  sc.set_measurements({});
   sc.show_only({});
   window.render();
   EXPECT_FALSE(sc.pick_at(dl.x(), dl.y()).has_value());
@@ -78,8 +78,25 @@ TEST(SceneMeasurement, TwoPicksAcrossTheTunnelMeasureItsWidth) {
   window.render();
   EXPECT_TRUE(sc.pick_at(dl.x(), dl.y()).has_value());
   EXPECT_TRUE(sc.pick_at(dr.x(), dr.y()).has_value());
+  const int one_drawn = white_pixels(window.render());
   EXPECT_TRUE(sc.pick_at(dl.x(), dl.y()).has_value());
   EXPECT_EQ(sc.measurement().picks.size(), 1u);  // the third pick started a new measurement
+  ASSERT_EQ(sc.measurements().size(), 2u);       // and the first one stays
+  EXPECT_NEAR(*sc.measurements().front().distance_m(), 1.0, 0.01);
+
+  // A second distance, lower in the tunnel: both segments and both labels are drawn.
+  const Eigen::Vector3d low_left = nearest_cloud_point(pf.result.cloud, {-0.5, 0.2, 1.2});
+  const Eigen::Vector3d low_right = nearest_cloud_point(pf.result.cloud, {0.5, 0.2, 1.2});
+  sc.set_measurements({sc.measurements().front()});
+  const Eigen::Vector2d ll = display_of(sc.renderer(), low_left), lr = display_of(sc.renderer(), low_right);
+  ASSERT_TRUE(sc.pick_at(ll.x(), ll.y()).has_value());
+  ASSERT_TRUE(sc.pick_at(lr.x(), lr.y()).has_value());
+  ASSERT_EQ(sc.measurements().size(), 2u);
+  EXPECT_NEAR(*sc.measurements().back().distance_m(), (low_right - low_left).norm(), 0.01);
+  const int two_drawn = white_pixels(window.render());
+  EXPECT_GT(two_drawn, one_drawn + 100) << one_drawn << " white pixels with one measurement";
+  const auto labels = scene::measurement_label(sc.measurements());
+  EXPECT_EQ(labels->GetNumberOfPoints(), 2);
 }
 
 }  // namespace

@@ -55,18 +55,24 @@ std::string Measurement::label() const {
   return buf;
 }
 
-vtkSmartPointer<vtkPolyData> measurement_polydata(const Measurement& m) {
+void add_pick(std::vector<Measurement>& measurements, const Eigen::Vector3d& p) {
+  if (measurements.empty() || measurements.back().picks.size() >= 2) measurements.emplace_back();
+  measurements.back().add(p);
+}
+
+vtkSmartPointer<vtkPolyData> measurement_polydata(const std::vector<Measurement>& measurements) {
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto verts = vtkSmartPointer<vtkCellArray>::New();
   auto lines = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& p : m.picks) {
-    const vtkIdType id = points->InsertNextPoint(p.x(), p.y(), p.z());
-    verts->InsertNextCell(1, &id);
-  }
-  if (m.picks.size() == 2) {
-    const vtkIdType ids[2] = {0, 1};
-    lines->InsertNextCell(2, ids);
+  for (const Measurement& m : measurements) {
+    vtkIdType ids[2] = {0, 0};
+    for (std::size_t k = 0; k < m.picks.size() && k < 2; ++k) {
+      const Eigen::Vector3d& p = m.picks[k];
+      ids[k] = points->InsertNextPoint(p.x(), p.y(), p.z());
+      verts->InsertNextCell(1, &ids[k]);
+    }
+    if (m.picks.size() == 2) lines->InsertNextCell(2, ids);
   }
   poly->SetPoints(points);
   poly->SetVerts(verts);
@@ -74,9 +80,10 @@ vtkSmartPointer<vtkPolyData> measurement_polydata(const Measurement& m) {
   return poly;
 }
 
-vtkSmartPointer<vtkPolyData> measurement_label(const Measurement& m) {
+vtkSmartPointer<vtkPolyData> measurement_label(const std::vector<Measurement>& measurements) {
   LabelPoints labels;
-  if (m.distance_m()) labels.add(0.5 * (m.picks[0] + m.picks[1]), m.label());
+  for (const Measurement& m : measurements)
+    if (m.distance_m()) labels.add(0.5 * (m.picks[0] + m.picks[1]), m.label());
   return labels.polydata();
 }
 

@@ -164,17 +164,22 @@ vtkSmartPointer<vtkActor> TunnelScene::make_actor(const Rgb* color, double point
 std::optional<Eigen::Vector3d> TunnelScene::pick_at(double x, double y) {
   const auto p = pick_point(renderer_, x, y);
   if (p) {
-    Measurement m = measurement_;
-    m.add(*p);
-    set_measurement(m);
+    std::vector<Measurement> all = measurements_;
+    add_pick(all, *p);
+    set_measurements(all);
   }
   return p;
 }
 
-void TunnelScene::set_measurement(const Measurement& m) {
-  measurement_ = m;
-  measurement_actor_->GetMapper()->SetInputDataObject(measurement_polydata(m));
-  measurement_label_->GetMapper()->SetInputDataObject(measurement_label(m));
+const Measurement& TunnelScene::measurement() const {
+  static const Measurement none;
+  return measurements_.empty() ? none : measurements_.back();
+}
+
+void TunnelScene::set_measurements(const std::vector<Measurement>& measurements) {
+  measurements_ = measurements;
+  measurement_actor_->GetMapper()->SetInputDataObject(measurement_polydata(measurements_));
+  measurement_label_->GetMapper()->SetInputDataObject(measurement_label(measurements_));
 }
 
 void TunnelScene::set_legend_background(bool on) { legend_->set_background(on); }
@@ -191,7 +196,7 @@ void TunnelScene::clear() {
     if (actors_[idx(l)]) set_input(l, vtkSmartPointer<vtkPolyData>::New());
   grid_labels_->GetMapper()->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
   dimension_labels_->GetMapper()->SetInputDataObject(vtkSmartPointer<vtkPolyData>::New());
-  set_measurement(Measurement());
+  set_measurements({});
   map_ = TunnelMap();
 }
 

@@ -62,10 +62,13 @@ class TunnelScene {
   const SceneLegend& legend() const { return *legend_; }
 
   // Measurement: pick_at() picks the surface drawn under display (x, y) (origin bottom-left; the
-  // scene must have been rendered) and adds it to the measurement, drawn in white.
+  // scene must have been rendered) and adds it to the last measurement, or starts a new one
+  // (add_pick); all are drawn in white, each with its distance, until cleared.
   std::optional<Eigen::Vector3d> pick_at(double x, double y);
-  const Measurement& measurement() const { return measurement_; }
-  void set_measurement(const Measurement& m);
+  const std::vector<Measurement>& measurements() const { return measurements_; }
+  // The last measurement (the one being picked); empty when there is none.
+  const Measurement& measurement() const;
+  void set_measurements(const std::vector<Measurement>& measurements);
 
   // Number of points / cells currently in a polydata layer (for tests and the status bar).
   vtkIdType layer_size(Layer layer) const;
@@ -92,7 +95,7 @@ class TunnelScene {
   vtkSmartPointer<vtkActor2D> dimension_labels_;  // width and height (Boundary layer)
   vtkSmartPointer<vtkActor> measurement_actor_;
   vtkSmartPointer<vtkActor2D> measurement_label_;
-  Measurement measurement_;
+  std::vector<Measurement> measurements_;
   vtkSmartPointer<vtkAxesActor> axes_;
   std::unique_ptr<SceneLegend> legend_;
   unsigned long fit_observer_ = 0;
