@@ -20,6 +20,14 @@ grep -q '"detected": 3' "$out/r.json"
 /usr/bin/tunnelmap-cli devices | grep -q '^tunnelmap-sim://lab'
 /usr/bin/tunnelmap-cli detect --device 'tunnelmap-sim://lab?frames=3' --frames 5 \
   --params /usr/share/tunnelmap/presets/lab.json | grep -q 'summary: 5/5 frames detected'
+# The installed GUI finds the same device and processes it live (a screenshot once the first
+# live frame is shown), again with no LD_LIBRARY_PATH.
+if command -v xvfb-run >/dev/null; then
+  gui=(env XDG_CONFIG_HOME="$out/config" xvfb-run -a -s "-screen 0 1280x800x24" /usr/bin/tunnelmap)
+  "${gui[@]}" --list-devices 2>/dev/null | grep -q '^tunnelmap-sim://lab'
+  "${gui[@]}" --device 'tunnelmap-sim://lab?frames=3' --screenshot "$out/live.png" --exit >/dev/null 2>&1
+  test "$(stat -c %s "$out/live.png")" -gt 20000
+fi
 # `evaluate` finds its presets in the installed location, not in a source tree.
 /usr/bin/tunnelmap-cli evaluate --protocol ci --methods pgc --frames 1 --check --out "$out/eval" > "$out/eval.txt"
 grep -qx 'presets: /usr/share/tunnelmap/presets' "$out/eval.txt" && test -s "$out/eval/table1.md"
