@@ -12,7 +12,7 @@ namespace tunnelmap::ui {
 
 namespace {
 constexpr int kMargin = 36;         // room for the grid labels
-constexpr int kCaptionHeight = 56;  // up to three lines under the drawing (wrapped when narrow)
+constexpr int kMinCaptionHeight = 56;  // room for three lines under the drawing
 constexpr double kSnapPx = 12.0;
 
 QColor qcolor(const scene::Rgb& c, int alpha = 255) {
@@ -35,8 +35,15 @@ void CrossSectionView::set_section(const CrossSection& section) {
 
 void CrossSectionView::clear() { set_section(CrossSection()); }
 
+int CrossSectionView::caption_height() const {
+  // As many lines as the caption wraps to in this width (a narrow dock wraps each line in two).
+  const QRect needed = QFontMetrics(font()).boundingRect(QRect(0, 0, std::max(10, width() - 16), 10000),
+                                                         Qt::AlignLeft | Qt::TextWordWrap, caption());
+  return std::max(kMinCaptionHeight, needed.height() + 6);
+}
+
 QRectF CrossSectionView::plot_rect() const {
-  return QRectF(kMargin, 8, std::max(10, width() - kMargin - 12), std::max(10, height() - 8 - kMargin - kCaptionHeight));
+  return QRectF(kMargin, 8, std::max(10, width() - kMargin - 12), std::max(10, height() - 8 - kMargin - caption_height()));
 }
 
 void CrossSectionView::fit() {
@@ -119,14 +126,17 @@ void CrossSectionView::paintEvent(QPaintEvent*) {
   p.setRenderHint(QPainter::Antialiasing, true);
   const QRectF area = plot_rect();
 
-  // Grid every 0.1 m, labelled every 0.5 m (a finer grid below 60 px per 0.1 m is clutter).
+  // Grid every 0.1 m, labelled every 0.5 m, or every 1 or 2 m where labels would touch.
   p.setFont(QFont(font().family(), 8));
   const Eigen::Vector2d lo = to_section(area.bottomLeft()), hi = to_section(area.topRight());
+  const double px_per_tenth = std::abs(to_widget({0.1, 0}).x() - to_widget({0, 0}).x());
+  int every = 5;  // tenths of a metre between labels
+  while (every < 20 && every * px_per_tenth < 34) every *= 2;
   for (int k = static_cast<int>(std::ceil(lo.x() * 10)); k <= static_cast<int>(std::floor(hi.x() * 10)); ++k) {
     const double x = to_widget({k / 10.0, 0}).x();
     p.setPen(QPen(QColor(255, 255, 255, k % 5 == 0 ? 70 : 28), 1));
     p.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
-    if (k % 5 == 0) {
+    if (k % every == 0) {
       p.setPen(QColor(200, 200, 200));
       p.drawText(QRectF(x - 30, area.bottom() + 2, 60, 14), Qt::AlignCenter, QString::number(k / 10.0, 'f', 1));
     }
@@ -135,7 +145,7 @@ void CrossSectionView::paintEvent(QPaintEvent*) {
     const double y = to_widget({0, k / 10.0}).y();
     p.setPen(QPen(QColor(255, 255, 255, k % 5 == 0 ? 70 : 28), 1));
     p.drawLine(QPointF(area.left(), y), QPointF(area.right(), y));
-    if (k % 5 == 0) {
+    if (k % (every * px_per_tenth < 16 ? 2 * every : every) == 0) {
       p.setPen(QColor(200, 200, 200));
       p.drawText(QRectF(0, y - 7, kMargin - 4, 14), Qt::AlignRight | Qt::AlignVCenter, QString::number(k / 10.0, 'f', 1));
     }
@@ -183,7 +193,8 @@ void CrossSectionView::paintEvent(QPaintEvent*) {
 
   p.setFont(font());
   p.setPen(QColor(230, 230, 230));
-  p.drawText(QRectF(8, height() - kCaptionHeight, width() - 16, kCaptionHeight),
+  const int caption_h = caption_height();
+  p.drawText(QRectF(8, height() - caption_h, width() - 16, caption_h),
              Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap, caption());
 }
 

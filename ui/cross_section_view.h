@@ -42,6 +42,7 @@ class CrossSectionView : public QWidget {
  private:
   void fit();
   QRectF plot_rect() const;
+  int caption_height() const;
 
   CrossSection section_;
   std::vector<Eigen::Vector2d> picks_;

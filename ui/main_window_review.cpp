@@ -6,6 +6,8 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
+#include <QScrollArea>
+#include <QStyle>
 #include <QtConcurrent/QtConcurrentRun>
 #include <optional>
 
@@ -39,7 +41,15 @@ void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
   cross_section_->setObjectName("crossSection");
   cross_section_dock_ = new QDockWidget(tr("Cross-section"), this);
   cross_section_dock_->setObjectName("crossSectionDock");
-  cross_section_dock_->setWidget(cross_section_);
+  // Scrolls rather than clipping the caption when the dock is shorter than the panel.
+  auto* scroll = new QScrollArea;
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setWidget(cross_section_);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(cross_section_->minimumSizeHint().width() +
+                          scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent));
+  cross_section_dock_->setWidget(scroll);
   addDockWidget(Qt::RightDockWidgetArea, cross_section_dock_);
 
   profile_ = new ProfilePlot(this);
