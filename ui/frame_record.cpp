@@ -1,7 +1,6 @@
 #include "ui/frame_record.h"
 
 #include "core/report/json_numbers.h"
-#include "core/report/statistics.h"
 
 #include <algorithm>
 
