@@ -52,6 +52,16 @@ int print_timed_runs(int reps, int warmup, const std::string& methods) {
       extract_planes(cloud, go, planes, scratch.planes);
       return static_cast<int>(planes.planes.size());
     };
+    if (wanted("tunnelmap-cells")) {
+      // The cell-based growing order (grow.cell_px = 8): no per-pixel normals.
+      GrowOptions cells = go;
+      cells.cell_px = 8;
+      time_runs(nf.name, "tunnelmap-cells", reps, warmup, [&] {
+        build_cloud(nf.frame, co, cloud, scratch.cloud);
+        extract_planes(cloud, cells, planes, scratch.planes);
+        return static_cast<int>(planes.planes.size());
+      });
+    }
     if (wanted("tunnelmap")) time_runs(nf.name, "tunnelmap", reps, warmup, extract);
     else extract();  // the PCL peer starts from this cloud
     // BM_OpenCvTotalWithCloud_FALS: depthTo3d + RgbdNormals + RgbdPlane (tuned settings).

@@ -52,7 +52,8 @@ void Pipeline::run(const DepthFrame& frame, FrameResult& result, FrameScratch& s
   }
   if (from <= Stage::Normals) {
     result.cloud.timings_ms["normals"] = 0.0;
-    estimate_normals(normals_, result.cloud, scratch.normals);
+    if (needs_point_normals(grow_)) estimate_normals(normals_, result.cloud, scratch.normals);
+    else result.cloud.normals.clear();  // keeps its capacity; no stale normals from another frame
   }
   if (from <= Stage::Planes) extract_planes(result.cloud, grow_, result.planes, scratch.planes);
   // In place: the map's vectors and strings keep their buffers (no allocation per frame).

@@ -9,7 +9,7 @@ bool operator==(const GrowOptions& a, const GrowOptions& b) {
          a.candidate_distance_m == b.candidate_distance_m && a.neighbourhood_n == b.neighbourhood_n &&
          a.min_points == b.min_points && a.min_area_m2 == b.min_area_m2 &&
          a.refit_normal == b.refit_normal && a.grid_step == b.grid_step &&
-         a.edge_on_pass == b.edge_on_pass && a.compute_contours == b.compute_contours;
+         a.edge_on_pass == b.edge_on_pass && a.cell_px == b.cell_px && a.compute_contours == b.compute_contours;
 }
 
 GrowOptions grow_options(const Parameters& p) {
@@ -24,6 +24,7 @@ GrowOptions grow_options(const Parameters& p) {
   o.refit_normal = p.get(refit_normal);
   o.grid_step = p.get(grid_step);
   o.edge_on_pass = p.get(edge_on_pass);
+  o.cell_px = p.get(cell_px);
   return o;
 }
 
@@ -31,7 +32,7 @@ ParameterGroup grow_parameter_group() {
   using namespace grow_keys;
   return {{angle_deg.spec(), distance_mm.spec(), candidate_distance_mm.spec(), neighbourhood_n.spec(),
            min_points.spec(), min_area_m2.spec(), refit_normal.spec(), grid_step.spec(),
-           edge_on_pass.spec()},
+           edge_on_pass.spec(), cell_px.spec()},
           {odd(neighbourhood_n)}};
 }
 

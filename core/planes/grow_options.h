@@ -37,6 +37,11 @@ inline constexpr ParameterKey<bool> edge_on_pass{
     "grow.edge_on_pass", "", true, 0, 1, 1, Stage::Planes, "Edge-on pass",
     "With grid step > 1: 1 grows every pixel from the unlabelled pixels where grid neighbours lie beyond "
     "the candidate distance (surfaces seen nearly edge-on, e.g. wall edge bands down the tunnel); 0: off"};
+inline constexpr ParameterKey<int> cell_px{
+    "grow.cell_px", "px", 0, 0, 32, 1, Stage::Planes, "Growing cell size",
+    "0: grow on the pixel grid (grid step); k >= 4: grow over k x k pixel cells joined by the eq. 2 "
+    "tests on their least-squares planes, then assign the pixels of cells at plane borders one by one "
+    "(no per-pixel normals needed)"};
 }  // namespace grow_keys
 
 struct GrowOptions {
@@ -49,12 +54,16 @@ struct GrowOptions {
   bool refit_normal = grow_keys::refit_normal.default_value;  // least-squares normal of the grown points
   int grid_step = grow_keys::grid_step.default_value;  // every k-th pixel, then assign the rest (1 = the paper)
   bool edge_on_pass = grow_keys::edge_on_pass.default_value;  // every-pixel growing where the grid cannot connect
+  int cell_px = grow_keys::cell_px.default_value;  // 0: pixel grid; k: k x k cells (cell_growing.h)
   bool compute_contours = true;  // not a parameter: callers that draw no contours turn it off
 };
 bool operator==(const GrowOptions& a, const GrowOptions& b);
 inline bool operator!=(const GrowOptions& a, const GrowOptions& b) { return !(a == b); }
 
 GrowOptions grow_options(const Parameters& p);
+// Whether extract_planes reads the cloud's per-pixel normals: the cell-based order does not, so
+// callers skip the normals stage (1.5 ms per VGA frame) for it.
+inline bool needs_point_normals(const GrowOptions& o) { return o.cell_px == 0; }
 ParameterGroup grow_parameter_group();  // table rows and rules, in table order
 
 }  // namespace tunnelmap

@@ -65,6 +65,32 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
                     PlaneScratch& scratch) {
   reset_timings(out.timings_ms);
   StageTimer timer(out.timings_ms, "planes");
+  if (options.cell_px > 0) {
+    extract_planes_by_cells(cloud, options, out, scratch.cells, scratch.contour_pool);
+    if (options.compute_contours) {
+      // Traced on every second pixel and row, as on the growing grid below (4x fewer pixels).
+      StageTimer contour_timer(out.timings_ms, "contours");
+      constexpr int kStep = 2;
+      Intrinsics half = cloud.intrinsics;
+      const int hw = (cloud.width + kStep - 1) / kStep, hh = (cloud.height + kStep - 1) / kStep;
+      half.width = hw, half.height = hh;
+      half.fx /= kStep, half.fy /= kStep, half.cx /= kStep, half.cy /= kStep;
+      std::vector<std::int32_t>& half_labels = scratch.coarse_labels;
+      half_labels.resize(static_cast<std::size_t>(hw) * hh);
+      for (int v = 0; v < hh; ++v)
+        for (int u = 0; u < hw; ++u)
+          half_labels[static_cast<std::size_t>(v) * hw + u] = out.labels[cloud.index(u * kStep, v * kStep)];
+      for (PlaneSegment& plane : out.planes) {
+        const int u0 = plane.bbox_u0, v0 = plane.bbox_v0, u1 = plane.bbox_u1, v1 = plane.bbox_v1;
+        plane.bbox_u0 = u0 / kStep, plane.bbox_v0 = v0 / kStep;
+        plane.bbox_u1 = std::min(hw - 1, (u1 + kStep - 1) / kStep);
+        plane.bbox_v1 = std::min(hh - 1, (v1 + kStep - 1) / kStep);
+        compute_contour(half_labels, hw, half, plane, scratch.contour);
+        plane.bbox_u0 = u0, plane.bbox_v0 = v0, plane.bbox_u1 = u1, plane.bbox_v1 = v1;
+      }
+    }
+    return;
+  }
   const int step = std::max(1, options.grid_step);
   if (step == 1) {
     {

@@ -24,6 +24,17 @@ class PlaneModel {
     sum_z3_ += z * z * z;
   }
 
+  // Adds `n` points given by their moments (sum p, sum p p^T as xx xy xz yy yz zz, sum z^3),
+  // each with the normal `normal`: a cell of the cell-based growing order joining at once.
+  void add_moments(long n, const Eigen::Vector3d& sum_p, const double sum_pp[6], double sum_z3,
+                   const Eigen::Vector3d& normal) {
+    count_ += n;
+    sum_p_ += sum_p;
+    sum_n_ += static_cast<double>(n) * normal;
+    for (int k = 0; k < 6; ++k) sum_pp_[k] += sum_pp[k];
+    sum_z3_ += sum_z3;
+  }
+
   // Adds another model's points (the model of the union of both point sets).
   void merge(const PlaneModel& o) {
     count_ += o.count_;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/frame/organized_cloud.h"
+#include "core/planes/cell_growing.h"
 #include "core/planes/plane_contour.h"
 #include "core/planes/plane_refinement.h"
 #include "core/planes/plane_slots.h"
@@ -21,6 +22,7 @@ struct PlaneScratch {
   std::vector<std::int32_t> coarse_labels;
   std::vector<std::uint8_t> edge_on_states;
   RefinementScratch refinement;
+  CellGrowingScratch cells;     // the cell-based growing order (grow.cell_px > 0)
   ContourScratch contour;
   ContourBufferPool contour_pool;  // contour buffers of removed plane slots, for the next new ones
 };

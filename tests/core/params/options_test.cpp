@@ -117,7 +117,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
   const std::vector<std::string> expected = {
       "cloud.max_range_m", "cloud.min_range_m", "normals.smoothing_px", "normals.max_depth_change",
       "grow.angle_deg", "grow.distance_mm", "grow.candidate_distance_mm", "grow.neighbourhood_n",
-      "grow.min_points", "grow.min_area_m2", "grow.refit_normal", "grow.grid_step", "grow.edge_on_pass",
+      "grow.min_points", "grow.min_area_m2", "grow.refit_normal", "grow.grid_step", "grow.edge_on_pass", "grow.cell_px",
       "tunnel.class_angle_deg", "tunnel.outlier_bin_deg", "tunnel.outlier_max_deg", "tunnel.zone_cluster_mm",
       "tunnel.min_cluster_points", "tunnel.zone_support_ref_m", "tunnel.zone_gap_ref_m",
       "tunnel.context_tolerance_mm", "tunnel.max_pair_angle_deg", "tunnel.symmetric_step_max_mm",

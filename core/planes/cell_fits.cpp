@@ -1,0 +1,181 @@
+#include "core/planes/cell_fits.h"
+
+#include <Eigen/Geometry>  // cross
+#include <algorithm>
+#include <cmath>
+
+#include <emmintrin.h>
+
+#include "core/util/sse_xyz.h"
+
+namespace tunnelmap {
+
+namespace {
+
+float hsum(__m128 a) {
+  const __m128 s = _mm_add_ps(a, _mm_movehl_ps(a, a));
+  return _mm_cvtss_f32(_mm_add_ss(s, _mm_shuffle_ps(s, s, 1)));
+}
+
+// A valid point of the cell to take moments about: its centre pixel, else the first valid one.
+bool reference_point(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, Eigen::Vector3f& ref) {
+  const Eigen::Vector3f& c = cloud.points[cloud.index((u0 + u1) / 2, (v0 + v1) / 2)];
+  if (OrganizedCloud::valid(c)) return ref = c, true;
+  for (int v = v0; v < v1; ++v)
+    for (int u = u0; u < u1; ++u) {
+      const Eigen::Vector3f& p = cloud.points[cloud.index(u, v)];
+      if (OrganizedCloud::valid(p)) return ref = p, true;
+    }
+  return false;
+}
+
+}  // namespace
+
+void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
+                  double m[11], const std::int32_t* labels, std::int32_t id) {
+  __m128 n = _mm_setzero_ps(), sx = n, sy = n, sz = n, sxx = n, sxy = n, sxz = n, syy = n, syz = n, szz = n,
+         sz3 = n;
+  const __m128 rx = _mm_set1_ps(ref.x()), ry = _mm_set1_ps(ref.y()), rz = _mm_set1_ps(ref.z());
+  const __m128 one = _mm_set1_ps(1.0f);
+  float tail[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  const __m128i id4 = _mm_set1_epi32(id);
+  for (int v = v0; v < v1; ++v) {
+    const float* row = cloud.points[cloud.index(0, v)].data();
+    const std::int32_t* lrow = labels ? labels + cloud.index(0, v) : nullptr;
+    int u = u0;
+    for (; u + 4 <= u1; u += 4) {
+      __m128 x, y, z;
+      load_xyz4(row + 3 * u, x, y, z);
+      __m128 ok = _mm_cmpeq_ps(z, z);  // NaN marks an invalid pixel
+      if (lrow)
+        ok = _mm_and_ps(ok, _mm_castsi128_ps(_mm_cmpeq_epi32(
+                                _mm_loadu_si128(reinterpret_cast<const __m128i*>(lrow + u)), id4)));
+      const __m128 dx = _mm_and_ps(ok, _mm_sub_ps(x, rx)), dy = _mm_and_ps(ok, _mm_sub_ps(y, ry));
+      const __m128 dz = _mm_and_ps(ok, _mm_sub_ps(z, rz));
+      n = _mm_add_ps(n, _mm_and_ps(ok, one));
+      sx = _mm_add_ps(sx, dx), sy = _mm_add_ps(sy, dy), sz = _mm_add_ps(sz, dz);
+      sxx = _mm_add_ps(sxx, _mm_mul_ps(dx, dx)), sxy = _mm_add_ps(sxy, _mm_mul_ps(dx, dy));
+      sxz = _mm_add_ps(sxz, _mm_mul_ps(dx, dz)), syy = _mm_add_ps(syy, _mm_mul_ps(dy, dy));
+      syz = _mm_add_ps(syz, _mm_mul_ps(dy, dz));
+      const __m128 dzz = _mm_mul_ps(dz, dz);
+      szz = _mm_add_ps(szz, dzz), sz3 = _mm_add_ps(sz3, _mm_mul_ps(dzz, dz));
+    }
+    for (; u < u1; ++u) {
+      const float* p = row + 3 * u;
+      if (!(p[2] == p[2]) || (lrow && lrow[u] != id)) continue;
+      const float dx = p[0] - ref.x(), dy = p[1] - ref.y(), dz = p[2] - ref.z();
+      const float t[11] = {1, dx, dy, dz, dx * dx, dx * dy, dx * dz, dy * dy, dy * dz, dz * dz, dz * dz * dz};
+      for (int k = 0; k < 11; ++k) tail[k] += t[k];
+    }
+  }
+  const __m128 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
+  for (int k = 0; k < 11; ++k) m[k] = static_cast<double>(hsum(all[k])) + tail[k];
+}
+
+long moments_about_origin(const double m[11], const Eigen::Vector3f& ref_f, Eigen::Vector3d& sum_p,
+                          double sum_pp[6], double& sum_z3) {
+  const double n = m[0];
+  const double r[3] = {ref_f.x(), ref_f.y(), ref_f.z()};
+  const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+  for (int k = 0; k < 3; ++k) sum_p(k) += n * r[k] + m[1 + k];
+  // sum (r_i + d_i)(r_j + d_j) and sum (r_z + d_z)^3, expanded.
+  for (int k = 0; k < 6; ++k) {
+    const int i = ij[k][0], j = ij[k][1];
+    sum_pp[k] += n * r[i] * r[j] + r[i] * m[1 + j] + r[j] * m[1 + i] + m[4 + k];
+  }
+  sum_z3 += n * r[2] * r[2] * r[2] + 3 * r[2] * r[2] * m[3] + 3 * r[2] * m[9] + m[10];
+  return std::lround(n);
+}
+
+namespace {
+
+void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, double max_mse, CellFit& c) {
+  c.count = static_cast<int>(std::lround(m[0]));
+  c.planar = false;
+  c.normal.setZero();
+  c.mse = 0.0;
+  if (c.count == 0) {
+    c.sum_p.setZero(), c.mean.setZero(), c.sum_z3 = 0.0;
+    std::fill(c.sum_pp, c.sum_pp + 6, 0.0), std::fill(c.scatter, c.scatter + 6, 0.0);
+    return;
+  }
+  const double cnt = c.count;
+  const Eigen::Vector3d ref = ref_f.cast<double>();
+  const Eigen::Vector3d d(m[1] / cnt, m[2] / cnt, m[3] / cnt);  // mean offset from ref
+  c.mean = ref + d;
+  c.sum_p = cnt * c.mean;
+  // About the mean: sum d d^T - n dbar dbar^T; about the origin: that + n mean mean^T.
+  const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+  for (int k = 0; k < 6; ++k) {
+    const int i = ij[k][0], j = ij[k][1];
+    c.scatter[k] = m[4 + k] - cnt * d(i) * d(j);
+    c.sum_pp[k] = c.scatter[k] + cnt * c.mean(i) * c.mean(j);
+  }
+  // sum (rz + dz)^3 expanded.
+  const double rz = ref.z();
+  c.sum_z3 = cnt * rz * rz * rz + 3 * rz * rz * m[3] + 3 * rz * m[9] + m[10];
+  if (c.count < std::max(3, min_valid)) return;
+  Eigen::Vector3d nrm;
+  if (!smallest_eigenvector(c.scatter, nrm)) return;
+  if (nrm.dot(c.mean) > 0) nrm = -nrm;  // face the camera
+  c.mse = std::max(0.0, c.mse_to(nrm, -nrm.dot(c.mean)));  // rounding can dip below 0 on an exact plane
+  c.normal = nrm;
+  c.planar = c.mse <= max_mse;
+  // The normal tilts most towards the plane's narrower in-plane direction: standard error
+  // sigma / sqrt(L1), with sigma^2 = L0 / (n - 3) and L0 <= L1 <= L2 the scatter's eigenvalues.
+  const double l0 = c.mse * cnt, t = c.scatter[0] + c.scatter[3] + c.scatter[5];
+  const double minors = c.scatter[0] * c.scatter[3] - c.scatter[1] * c.scatter[1] + c.scatter[0] * c.scatter[5] -
+                        c.scatter[2] * c.scatter[2] + c.scatter[3] * c.scatter[5] - c.scatter[4] * c.scatter[4];
+  const double sum12 = t - l0, prod12 = minors - l0 * sum12;
+  const double l1 = 0.5 * (sum12 - std::sqrt(std::max(0.0, sum12 * sum12 - 4 * prod12)));
+  c.normal_se = (cnt > 3 && l1 > 0) ? std::sqrt(l0 / ((cnt - 3) * l1)) : M_PI;
+}
+
+}  // namespace
+
+bool smallest_eigenvector(const double s[6], Eigen::Vector3d& v) {
+  const Eigen::Vector3d r0(s[0], s[1], s[2]), r1(s[1], s[3], s[4]), r2(s[2], s[4], s[5]);
+  // Columns of the adjugate: sum over i of (product of the other two eigenvalues) e_i e_i^T,
+  // dominated by the smallest eigenvalue's eigenvector.
+  const Eigen::Vector3d c0 = r1.cross(r2), c1 = r2.cross(r0), c2 = r0.cross(r1);
+  const double n0 = c0.squaredNorm(), n1 = c1.squaredNorm(), n2 = c2.squaredNorm();
+  const double trace = s[0] + s[3] + s[5];
+  const double best = std::max({n0, n1, n2});
+  // Rank below 2: every 2x2 minor vanishes next to the matrix's scale.
+  if (!(trace > 0) || best <= 1e-24 * trace * trace * trace * trace) return false;
+  const Eigen::Vector3d first = n0 == best ? c0 : n1 == best ? c1 : c2;
+  // A second step squares the ratio of the two smallest eigenvalues in the error.
+  v = c0 * first.x() + c1 * first.y() + c2 * first.z();
+  const double len = v.norm();
+  if (!(len > 0)) return false;
+  v /= len;
+  return true;
+}
+
+void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
+                       CellGrid& grid) {
+  const int c = std::max(2, cell_px);
+  grid.cell_px = c;
+  grid.cols = (cloud.width + c - 1) / c;
+  grid.rows = (cloud.height + c - 1) / c;
+  grid.cells.resize(static_cast<std::size_t>(grid.cols) * grid.rows);
+  const double max_mse = max_rms_m * max_rms_m;
+  double m[11];
+  for (int cv = 0; cv < grid.rows; ++cv) {
+    const int v0 = cv * c, v1 = std::min(cloud.height, v0 + c);
+    for (int cu = 0; cu < grid.cols; ++cu) {
+      const int u0 = cu * c, u1 = std::min(cloud.width, u0 + c);
+      CellFit& cell = grid.cells[grid.index(cu, cv)];
+      Eigen::Vector3f ref;
+      if (!reference_point(cloud, u0, v0, u1, v1, ref)) {
+        std::fill(m, m + 11, 0.0);
+        fit_cell(m, Eigen::Vector3f::Zero(), min_valid, max_mse, cell);
+        continue;
+      }
+      cell_moments(cloud, u0, v0, u1, v1, ref, m);
+      fit_cell(m, ref, min_valid, max_mse, cell);
+    }
+  }
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,64 @@
+#pragma once
+// Square cells of an organised cloud, each with its point moments and least-squares plane,
+// from one pass over the points: the units the cell-based growing order joins (the eq. 2 tests
+// and the eq. 4 model applied to a cell's points at once). Moments are taken about a point of
+// the cell itself, in float, so they keep millimetre detail at any range.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/frame/organized_cloud.h"
+
+namespace tunnelmap {
+
+struct CellFit {
+  int count = 0;                                      // valid points
+  Eigen::Vector3d sum_p = Eigen::Vector3d::Zero();    // sum of points
+  double sum_pp[6] = {0, 0, 0, 0, 0, 0};              // sum p p^T about the origin: xx xy xz yy yz zz
+  double sum_z3 = 0.0;                                // sum z^3 (pixel footprints, segment_statistics)
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double scatter[6] = {0, 0, 0, 0, 0, 0};             // sum (p - mean)(p - mean)^T
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();   // unit, facing the camera; zero if not planar
+  double mse = 0.0;                                   // mean squared distance to its own plane
+  double normal_se = 0.0;  // standard error of the normal's direction (radians), from the fit's residual
+  bool planar = false;
+
+  // Mean squared distance of the cell's points to the plane n.x + d = 0 (exact, from moments).
+  double mse_to(const Eigen::Vector3d& n, double d) const {
+    const double spread = n.x() * (n.x() * scatter[0] + 2 * n.y() * scatter[1] + 2 * n.z() * scatter[2]) +
+                          n.y() * (n.y() * scatter[3] + 2 * n.z() * scatter[4]) + n.z() * n.z() * scatter[5];
+    const double off = n.dot(mean) + d;
+    return spread / count + off * off;
+  }
+};
+
+struct CellGrid {
+  int cell_px = 0;  // side of a cell; cells on the right and bottom edge may be smaller
+  int cols = 0, rows = 0;
+  std::vector<CellFit> cells;  // rows * cols, row-major
+
+  int index(int cu, int cv) const { return cv * cols + cu; }
+};
+
+// A cell is planar when at least `min_valid` of its pixels have a point and the RMS distance
+// to its least-squares plane is at most `max_rms_m`.
+void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
+                       CellGrid& grid);
+
+// Moments about `ref` of the valid points in pixels [u0, u1) x [v0, v1), only those labelled
+// `id` when `labels` (width*height) is given: count, sums of d (3), of d d^T (xx xy xz yy yz
+// zz) and of dz^3, d = p - ref; float sums, so `ref` must lie near the points.
+void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
+                  double m[11], const std::int32_t* labels = nullptr, std::int32_t id = 0);
+
+// The same moments as sums about the origin, in double: adds them to `sum_p`, `sum_pp` and
+// `sum_z3`, and returns the count.
+long moments_about_origin(const double m[11], const Eigen::Vector3f& ref, Eigen::Vector3d& sum_p,
+                          double sum_pp[6], double& sum_z3);
+
+// Smallest-eigenvalue eigenvector of a symmetric 3x3 matrix given as xx xy xz yy yz zz, by two
+// steps of inverse iteration through the adjugate (exact for a rank-2 matrix, far cheaper than
+// a full eigen-solver). Returns false for a matrix of rank below 2 (no unique normal).
+bool smallest_eigenvector(const double m[6], Eigen::Vector3d& v);
+
+}  // namespace tunnelmap

@@ -1,0 +1,331 @@
+#include "core/planes/cell_growing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <emmintrin.h>
+
+#include "core/planes/segment_statistics.h"
+#include "core/util/sse_xyz.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr int kSeedBuckets = 32;
+constexpr double kAngleErrors = 2.0;
+constexpr double kContinuitySigmas = 3.0;
+constexpr double kContinuityFloor = 0.4;  // of epsilon: 6 mm at the paper's 15 mm
+constexpr double kCorrelatedNoise = 1.5;
+
+// Planar cells ordered by their fit, flattest first (bucketed, raster order within a bucket):
+// regions start where the plane is best defined.
+void order_seeds(const CellGrid& grid, double max_mse, CellGrowingScratch& s) {
+  s.bucket_start.assign(kSeedBuckets + 1, 0);
+  const double scale = kSeedBuckets / std::max(max_mse, 1e-30);
+  const auto bucket = [&](const CellFit& c) { return std::min(kSeedBuckets - 1, static_cast<int>(c.mse * scale)); };
+  for (const CellFit& c : grid.cells)
+    if (c.planar) ++s.bucket_start[bucket(c) + 1];
+  for (int b = 0; b < kSeedBuckets; ++b) s.bucket_start[b + 1] += s.bucket_start[b];
+  s.seeds.resize(s.bucket_start[kSeedBuckets]);
+  for (std::size_t i = 0; i < grid.cells.size(); ++i)
+    if (grid.cells[i].planar) s.seeds[s.bucket_start[bucket(grid.cells[i])]++] = static_cast<std::int32_t>(i);
+}
+
+// The eq. 4 model for the eq. 2 tests: the unit mean normal n* (the angle test) and the plane
+// through the mean point p* (the distance test). That plane's normal is the least-squares one
+// of the region's points: over a wall metres long, the mean of noisy cell normals tilts the
+// plane by enough to stop the growth part of the way along (measured: walls split in bands).
+struct GrowthPlane {
+  Eigen::Vector3d mean_normal;
+  Eigen::Vector3d n;
+  double d;
+};
+GrowthPlane growth_plane(const PlaneModel& m) {
+  GrowthPlane g;
+  g.mean_normal = m.sum_normal().normalized();
+  const Eigen::Vector3d p = m.mean_point();
+  const Eigen::Matrix3d c = m.covariance();
+  const double cov[6] = {c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+  if (!smallest_eigenvector(cov, g.n)) g.n = g.mean_normal;
+  if (g.n.dot(g.mean_normal) < 0) g.n = -g.n;
+  g.d = -g.n.dot(p);
+  return g;
+}
+
+// Breadth-first over 4-neighbour cells from `seed`; returns with the region's cells in s.queue.
+// The surface runs on without a step from region cell `a` to its neighbour `b`: along the
+// region's normal `n`, b's centroid lies within 3 standard errors of the two means of a's, or
+// within 0.4 epsilon. A zone plate's 8 mm step between two flat cells passes the eq. 2
+// distance test (epsilon 15 mm) but not this one; per pixel, the step's own face stops the
+// growth through its normals, and a step along a cell border has no such face.
+bool continuous(const CellFit& a, const CellFit& b, const Eigen::Vector3d& n, double eps) {
+  const double off = n.dot(b.mean - a.mean);
+  // Depth noise is correlated within a cell (disparity quantisation terraces), so the means
+  // scatter more than sigma / sqrt(n): 1.5 times the cells' own RMS is allowed too.
+  const double bound = std::max({kContinuityFloor * eps, kContinuitySigmas * std::sqrt(a.mse / a.count + b.mse / b.count),
+                                 kCorrelatedNoise * std::sqrt(0.5 * (a.mse + b.mse))});
+  return std::abs(off) <= bound;
+}
+
+void grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, double eps,
+                 CellGrowingScratch& s, PlaneModel& model) {
+  const auto join = [&](int c) {
+    const CellFit& f = grid.cells[c];
+    model.add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3, f.normal);
+    s.cell_labels[c] = id;
+    s.queue.push_back(c);
+  };
+  s.queue.clear();
+  model = PlaneModel();
+  join(seed);
+  GrowthPlane plane = growth_plane(model);
+  for (std::size_t head = 0; head < s.queue.size(); ++head) {
+    const int c = s.queue[head];
+    const int cu = c % grid.cols, cv = c / grid.cols;
+    const int next[4] = {cu > 0 ? c - 1 : -1, cu + 1 < grid.cols ? c + 1 : -1, cv > 0 ? c - grid.cols : -1,
+                         cv + 1 < grid.rows ? c + grid.cols : -1};
+    for (int nb : next) {
+      if (nb < 0 || s.cell_labels[nb] != 0) continue;
+      const CellFit& f = grid.cells[nb];
+      // Eq. 2 on the cell: its normal within lambda of the mean normal, and its points (their
+      // RMS, exact from the moments) within epsilon of the model plane.
+      if (!f.planar || f.normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2) continue;
+      if (!continuous(grid.cells[c], f, plane.n, eps)) continue;
+      join(nb);
+      plane = growth_plane(model);  // eq. 4 after every join
+    }
+  }
+}
+
+void include_box(PlaneSegment& p, int u0, int v0, int u1, int v1) {
+  p.bbox_u0 = std::min(p.bbox_u0, u0), p.bbox_v0 = std::min(p.bbox_v0, v0);
+  p.bbox_u1 = std::max(p.bbox_u1, u1), p.bbox_v1 = std::max(p.bbox_v1, v1);
+}
+
+// Writes `id` to the valid pixels of [u0, u1) x [v0, v1), 0 to the others.
+void label_valid_pixels(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, std::int32_t id,
+                        std::int32_t* labels) {
+  const __m128i id4 = _mm_set1_epi32(id);
+  for (int v = v0; v < v1; ++v) {
+    const float* p = cloud.points[cloud.index(0, v)].data();
+    std::int32_t* l = labels + cloud.index(0, v);
+    int u = u0;
+    for (; u + 4 <= u1; u += 4) {
+      __m128 x, y, z;
+      load_xyz4(p + 3 * u, x, y, z);
+      const __m128i ok = _mm_castps_si128(_mm_cmpeq_ps(z, z));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(l + u), _mm_and_si128(ok, id4));
+    }
+    for (; u < u1; ++u) l[u] = p[3 * u + 2] == p[3 * u + 2] ? id : 0;
+  }
+}
+
+// Each valid pixel of the cell to the nearest of the candidate planes within eps, four pixels
+// at a time; per candidate: pixels joined, the first one (a reference for the moments) and the
+// bounding box (u0, v0, u1, v1).
+void nearest_plane_labels(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1,
+                          const std::vector<Eigen::Vector4d>& assign_planes, const std::int32_t* cand, int ncand,
+                          float eps, std::int32_t* labels, int joined[], Eigen::Vector3f ref[], int box[][4]) {
+  __m128 nx[9], ny[9], nz[9], nd[9];
+  __m128i id[9];
+  for (int k = 0; k < ncand; ++k) {
+    const Eigen::Vector4d& a = assign_planes[cand[k] - 1];
+    nx[k] = _mm_set1_ps(static_cast<float>(a.x())), ny[k] = _mm_set1_ps(static_cast<float>(a.y()));
+    nz[k] = _mm_set1_ps(static_cast<float>(a.z())), nd[k] = _mm_set1_ps(static_cast<float>(a.w()));
+    id[k] = _mm_set1_epi32(cand[k]);
+  }
+  const __m128 eps4 = _mm_set1_ps(eps), abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+  for (int v = v0; v < v1; ++v) {
+    const float* p = cloud.points[cloud.index(0, v)].data();
+    std::int32_t* l = labels + cloud.index(0, v);
+    int u = u0;
+    for (; u + 4 <= u1; u += 4) {
+      __m128 x, y, z;
+      load_xyz4(p + 3 * u, x, y, z);
+      __m128 best_d = eps4;
+      __m128i best = _mm_setzero_si128();
+      for (int k = 0; k < ncand; ++k) {
+        const __m128 d = _mm_and_ps(abs_mask, _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx[k], x), _mm_mul_ps(ny[k], y)),
+                                                          _mm_add_ps(_mm_mul_ps(nz[k], z), nd[k])));
+        const __m128 closer = _mm_cmple_ps(d, best_d);  // false for NaN (invalid pixels)
+        best_d = _mm_or_ps(_mm_and_ps(closer, d), _mm_andnot_ps(closer, best_d));
+        const __m128i c = _mm_castps_si128(closer);
+        best = _mm_or_si128(_mm_and_si128(c, id[k]), _mm_andnot_si128(c, best));
+      }
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(l + u), best);
+    }
+    for (; u < u1; ++u) {
+      std::int32_t best = 0;
+      float best_d = eps;
+      for (int k = 0; k < ncand; ++k) {
+        const Eigen::Vector4d& a = assign_planes[cand[k] - 1];
+        const float d = std::abs(static_cast<float>(a.x()) * p[3 * u] + static_cast<float>(a.y()) * p[3 * u + 1] +
+                                 static_cast<float>(a.z()) * p[3 * u + 2] + static_cast<float>(a.w()));
+        if (d <= best_d) best_d = d, best = cand[k];
+      }
+      l[u] = best;
+    }
+    // Per candidate: count, first pixel, box (labels just written, still in L1).
+    for (u = u0; u < u1; ++u) {
+      if (l[u] == 0) continue;
+      const int k = static_cast<int>(std::find(cand, cand + ncand, l[u]) - cand);
+      if (joined[k]++ == 0) {
+        ref[k] = cloud.points[cloud.index(u, v)];
+        box[k][0] = box[k][2] = u, box[k][1] = box[k][3] = v;
+      } else {
+        box[k][0] = std::min(box[k][0], u), box[k][2] = std::max(box[k][2], u), box[k][3] = v;
+      }
+    }
+  }
+}
+
+// Every pixel's label, and the final models. A labelled cell with no other plane in its 3x3
+// neighbourhood keeps all its valid pixels (it passed the eq. 2 tests as a whole). In any other
+// cell next to a plane each pixel joins the nearest neighbouring plane within epsilon (eq. 2's
+// distance test), or none; the moments of what joined are then taken per plane.
+void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps, CellGrowingScratch& s,
+                   PlaneSegments& out) {
+  const int w = cloud.width, c = grid.cell_px;
+  out.labels.resize(static_cast<std::size_t>(w) * cloud.height);
+  const float epsf = static_cast<float>(eps);
+  double m[11];
+  for (int cv = 0; cv < grid.rows; ++cv) {
+    const int v0 = cv * c, v1 = std::min(cloud.height, v0 + c);
+    for (int cu = 0; cu < grid.cols; ++cu) {
+      const int u0 = cu * c, u1 = std::min(w, u0 + c);
+      const int ci = grid.index(cu, cv);
+      const std::int32_t own = s.cell_labels[ci];
+      std::int32_t cand[9];
+      int ncand = 0;
+      for (int dv = -1; dv <= 1; ++dv) {
+        const int nv = cv + dv;
+        if (nv < 0 || nv >= grid.rows) continue;
+        for (int du = -1; du <= 1; ++du) {
+          const int nu = cu + du;
+          if (nu < 0 || nu >= grid.cols) continue;
+          const std::int32_t l = s.cell_labels[grid.index(nu, nv)];
+          if (l > 0 && std::find(cand, cand + ncand, l) == cand + ncand) cand[ncand++] = l;
+        }
+      }
+      if (ncand == 0) {
+        for (int v = v0; v < v1; ++v) std::fill_n(out.labels.data() + cloud.index(u0, v), u1 - u0, 0);
+        continue;
+      }
+      if (own > 0 && ncand == 1) {
+        const CellFit& f = grid.cells[ci];
+        s.final_models[own - 1].add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3,
+                                            s.assign_planes[own - 1].head<3>());
+        include_box(out.planes[own - 1], u0, v0, u1 - 1, v1 - 1);
+        label_valid_pixels(cloud, u0, v0, u1, v1, own, out.labels.data());
+        continue;
+      }
+      int joined[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+      Eigen::Vector3f ref[9];
+      int box[9][4];
+      nearest_plane_labels(cloud, u0, v0, u1, v1, s.assign_planes, cand, ncand, epsf, out.labels.data(), joined,
+                           ref, box);
+      for (int k = 0; k < ncand; ++k)
+        if (joined[k] > 0) include_box(out.planes[cand[k] - 1], box[k][0], box[k][1], box[k][2], box[k][3]);
+      for (int k = 0; k < ncand; ++k) {
+        if (joined[k] == 0) continue;
+        cell_moments(cloud, u0, v0, u1, v1, ref[k], m, out.labels.data(), cand[k]);
+        Eigen::Vector3d sum_p = Eigen::Vector3d::Zero();
+        double sum_pp[6] = {0, 0, 0, 0, 0, 0}, sum_z3 = 0;
+        const long n = moments_about_origin(m, ref[k], sum_p, sum_pp, sum_z3);
+        s.final_models[cand[k] - 1].add_moments(n, sum_p, sum_pp, sum_z3, s.assign_planes[cand[k] - 1].head<3>());
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& options, PlaneSegments& out,
+                             CellGrowingScratch& s, ContourBufferPool& pool) {
+  out.width = cloud.width;
+  out.height = cloud.height;
+  const std::size_t n = static_cast<std::size_t>(cloud.width) * cloud.height;
+  if (cloud.points.size() != n || n == 0) {
+    shrink_plane_slots(out.planes, 0, pool);
+    out.labels.assign(n, 0);
+    return;
+  }
+  const int c = std::max(2, options.cell_px);
+  const double eps = options.distance_m;
+  // A cell is planar when its own fit leaves its points within epsilon/2 on RMS (the rest of
+  // epsilon is the room for the noise of the region's model), with half its pixels valid.
+  StageTimer fits_timer(out.timings_ms, "cell_fits");
+  compute_cell_fits(cloud, c, (c * c + 1) / 2, 0.5 * eps, s.grid);
+  fits_timer.stop();
+  StageTimer grow_timer(out.timings_ms, "grow");
+  const CellGrid& grid = s.grid;
+  const std::size_t cells = grid.cells.size();
+  s.cell_labels.assign(cells, 0);
+  s.seeded.assign(cells, 0);
+  order_seeds(grid, 0.25 * eps * eps, s);
+
+  // Eq. 2's lambda bounds the angle between two directions known exactly; a cell's normal is
+  // known to its standard error, so the bound widens by twice that (a cell of pure noise on the
+  // plane passes 95 % of the time).
+  s.cos_angle.resize(cells);
+  const double lambda = options.angle_deg * M_PI / 180.0;
+  for (std::size_t i = 0; i < cells; ++i)
+    s.cos_angle[i] = std::cos(std::min(0.5 * M_PI, lambda + kAngleErrors * grid.cells[i].normal_se));
+  const double eps2 = eps * eps;
+  const double fxfy = cloud.intrinsics.fx * cloud.intrinsics.fy;
+  std::size_t kept = 0;
+  std::int32_t next_id = 1;
+  PlaneModel model;
+  for (const std::int32_t seed : s.seeds) {
+    if (s.cell_labels[seed] != 0 || s.seeded[seed]) continue;
+    grow_region(grid, seed, next_id, eps2, eps, s, model);
+    for (const std::int32_t q : s.queue) s.seeded[q] = 1;
+    bool keep = model.count() >= options.min_points;
+    if (keep) {
+      if (kept == out.planes.size()) add_plane_slot(out.planes, pool);
+      fill_segment_statistics(out.planes[kept], model, options, fxfy);
+      keep = out.planes[kept].area_m2 >= options.min_area_m2;
+    }
+    if (!keep) {  // free again for later regions, but never a seed
+      for (const std::int32_t q : s.queue) s.cell_labels[q] = 0;
+      continue;
+    }
+    PlaneSegment& plane = out.planes[kept];
+    plane.id = next_id;
+    if (s.assign_planes.size() <= kept) s.assign_planes.resize(kept + 1), s.final_models.resize(kept + 1);
+    s.assign_planes[kept] << plane.normal, plane.offset_m;
+    s.final_models[kept] = PlaneModel();
+    plane.bbox_u0 = cloud.width, plane.bbox_v0 = cloud.height, plane.bbox_u1 = -1, plane.bbox_v1 = -1;
+    ++kept;
+    ++next_id;
+  }
+  shrink_plane_slots(out.planes, kept, pool);
+  grow_timer.stop();
+  StageTimer assign_timer(out.timings_ms, "assign");
+  assign_pixels(cloud, grid, eps, s, out);
+  // Final statistics from the assigned points; a plane whose border pixels all went to its
+  // neighbours and that fell below the minimum is dropped, and the ids closed up.
+  std::vector<std::int32_t>& remap = s.queue;  // free now: old id -> new id
+  remap.assign(kept + 1, 0);
+  std::size_t now = 0;
+  for (std::size_t i = 0; i < kept; ++i) {
+    if (s.final_models[i].count() < options.min_points) continue;
+    if (now != i) std::swap(out.planes[now], out.planes[i]);
+    PlaneSegment& plane = out.planes[now];
+    // The plane itself (normal, offset, RMS) stays the grown cells' fit: those passed the eq. 2
+    // tests as wholes, while border pixels near a corner pass the distance test for both
+    // planes and would tilt the fit. Points, centroid and area count every assigned pixel.
+    const PlaneModel& all = s.final_models[i];
+    plane.points = static_cast<int>(all.count());
+    plane.centroid = all.mean_point();
+    plane.area_m2 = std::abs(plane.offset_m) > 1e-9 ? all.sum_z_cubed() / (fxfy * std::abs(plane.offset_m)) : 0.0;
+    remap[i + 1] = static_cast<std::int32_t>(++now);
+    plane.id = static_cast<int>(now);
+  }
+  if (now != kept) {
+    for (std::int32_t& l : out.labels) l = remap[l];
+    shrink_plane_slots(out.planes, now, pool);
+  }
+}
+
+}  // namespace tunnelmap

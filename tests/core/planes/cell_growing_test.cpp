@@ -1,0 +1,107 @@
+// The cell-based growing order (grow.cell_px): cell fits from moments, planes found without
+// per-pixel normals, and a zone plate's 8 mm step kept apart from its edge band.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/planes/cell_fits.h"
+#include "core/planes/plane_growing.h"
+#include "tests/core/planes/hand_cloud.h"
+
+using namespace tunnelmap;
+using tunnelmap::testing::hand_cloud;
+
+namespace {
+
+// A camera looking at a wall 2 m away whose right part (u >= step_u) stands `step_m` proud.
+OrganizedCloud stepped_wall(int w, int h, int step_u, double step_m) {
+  OrganizedCloud c = hand_cloud(w, h, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const double z = 2.0 - (u >= step_u ? step_m : 0.0);
+    p = Eigen::Vector3f(static_cast<float>((u - w / 2.0) / 570.0 * z), static_cast<float>((v - h / 2.0) / 570.0 * z),
+                        static_cast<float>(z));
+  });
+  c.intrinsics.fx = c.intrinsics.fy = 570.0;
+  c.intrinsics.cx = w / 2.0, c.intrinsics.cy = h / 2.0;
+  return c;
+}
+
+}  // namespace
+
+TEST(CellFits, SmallestEigenvectorIsThePlaneNormal) {
+  // Points spread in x and y, none in z: the normal is z, whatever the spread.
+  const double s[6] = {4.0, 0.5, 0.0, 2.0, 0.0, 0.0};
+  Eigen::Vector3d n;
+  ASSERT_TRUE(smallest_eigenvector(s, n));
+  EXPECT_NEAR(std::abs(n.z()), 1.0, 1e-12);
+  const double line[6] = {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // collinear points: no unique normal
+  EXPECT_FALSE(smallest_eigenvector(line, n));
+}
+
+TEST(CellFits, TiltedPlaneCellsFitExactlyAndStepCellsDoNot) {
+  // A plane tilted 30 degrees about y; moments taken about a point inside each cell.
+  const double t = 30.0 * M_PI / 180.0;
+  OrganizedCloud c = hand_cloud(32, 16, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const double x = (u - 16) * 0.004, y = (v - 8) * 0.004;
+    p = Eigen::Vector3f(static_cast<float>(x), static_cast<float>(y), static_cast<float>(3.0 + std::tan(t) * x));
+  });
+  c.points[c.index(3, 3)] = tunnelmap::testing::no_normal();  // an invalid pixel is skipped
+  CellGrid grid;
+  compute_cell_fits(c, 8, 32, 0.001, grid);
+  ASSERT_EQ(grid.cols, 4);
+  ASSERT_EQ(grid.rows, 2);
+  EXPECT_EQ(grid.cells[0].count, 63);
+  for (const CellFit& f : grid.cells) {
+    EXPECT_TRUE(f.planar);
+    EXPECT_NEAR(f.normal.dot(Eigen::Vector3d(-std::sin(t), 0.0, std::cos(t))), -1.0, 1e-5);  // faces the camera
+    EXPECT_LT(std::sqrt(f.mse), 1e-5);
+  }
+  // 8 mm step through the middle of each cell: not planar at a 1 mm RMS limit.
+  const OrganizedCloud stepped = stepped_wall(32, 16, 4, 0.008);
+  compute_cell_fits(stepped, 8, 32, 0.001, grid);
+  EXPECT_FALSE(grid.cells[0].planar);
+  EXPECT_TRUE(grid.cells[1].planar);
+}
+
+TEST(CellGrowing, StepAlongACellBorderSplitsTheWallAndEveryPixelIsLabelled) {
+  // The step falls exactly on a cell border (u = 80): no cell straddles it, and the 8 mm offset
+  // passes the eq. 2 distance test (15 mm); the continuity test still keeps the two apart.
+  const OrganizedCloud c = stepped_wall(160, 120, 80, 0.008);
+  GrowOptions o;
+  o.cell_px = 8;
+  const PlaneSegments planes = extract_planes(c, o);
+  ASSERT_EQ(planes.planes.size(), 2u);
+  int left = 0;
+  for (const PlaneSegment& p : planes.planes) {
+    EXPECT_NEAR(std::abs(p.normal.z()), 1.0, 1e-6);
+    EXPECT_EQ(p.points, 80 * 120);
+    // Offsets 2.000 m and 1.992 m, to a tenth of a millimetre.
+    const double off = std::abs(p.offset_m);
+    EXPECT_TRUE(std::abs(off - 2.0) < 1e-4 || std::abs(off - 1.992) < 1e-4) << off;
+    left += std::abs(off - 2.0) < 1e-4;
+  }
+  EXPECT_EQ(left, 1);
+  for (int v = 0; v < 120; ++v)
+    for (int u = 0; u < 160; ++u) {
+      const int id = planes.labels[c.index(u, v)];
+      ASSERT_GT(id, 0);
+      EXPECT_EQ(std::abs(std::abs(planes.planes[id - 1].offset_m) - 2.0) < 1e-4, u < 80) << u << "," << v;
+    }
+  // Area: the wall is 160 x 120 pixels at about 2 m, (160 * 2 / 570) * (120 * 2 / 570) m^2.
+  double area = 0.0;
+  for (const PlaneSegment& p : planes.planes) area += p.area_m2;
+  EXPECT_NEAR(area, (160 * 2.0 / 570) * (120 * 2.0 / 570), 0.01);
+}
+
+TEST(CellGrowing, ReadsNoNormalsAndPlanesCliSkipsThem) {
+  OrganizedCloud c = stepped_wall(64, 48, 1000, 0.0);  // one flat wall
+  c.normals.clear();
+  GrowOptions o;
+  o.cell_px = 8;
+  EXPECT_FALSE(needs_point_normals(o));
+  const PlaneSegments planes = extract_planes(c, o);
+  ASSERT_EQ(planes.planes.size(), 1u);
+  EXPECT_EQ(planes.planes[0].points, 64 * 48);
+  EXPECT_FALSE(planes.planes[0].contour.empty());
+  o.cell_px = 0;
+  EXPECT_TRUE(needs_point_normals(o));
+}
