@@ -28,6 +28,7 @@ struct EvaluateOptions {
   std::string out_dir = "evaluation";
   std::vector<std::string> datasets;
   std::string params_file;
+  std::vector<std::string> sets;
   std::string methods = "pgc,qhull,ransac";
   std::vector<std::string> sweeps;
   std::optional<int> frames, ransac_frames, ransac_step, ransac_iterations;
@@ -94,6 +95,10 @@ int run(const EvaluateOptions& o) {
   // shorthands, range-checked by the table.
   Parameters params;
   if (!o.params_file.empty() && !o.datasets.empty()) params.load_json_file(o.params_file);
+  // --set overrides the replicas' presets and the --dataset parameters alike; checked here,
+  // before anything runs.
+  params.set_from_strings(o.sets);
+  p.preset_overrides = o.sets;
   const auto shorthand = [&params](const char* flag, const ParameterKey<int>& key, int value) {
     try {
       params.set(key, value);
@@ -178,6 +183,7 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--out", o.out_dir, "Output folder (created): table1.md, results.csv, table1.png")->capture_default_str();
   cmd->add_option("--dataset", o.datasets, "Evaluate these dataset folders (ground truth required) instead of the replicas");
   cmd->add_option("--params", o.params_file, "Parameter preset JSON for --dataset runs");
+  cmd->add_option("--set", o.sets, "Override one parameter of the presets (and of --params): KEY=VALUE (repeatable)");
   cmd->add_option("--methods", o.methods, "Comma-separated subset of pgc,qhull,ransac")->capture_default_str();
   cmd->add_option("--sweep", o.sweeps, "Sweeps to run with --protocol sweeps (default all)");
   cmd->add_option("--frames", o.frames, "Frames per cell (per pose for sweeps)");

@@ -37,9 +37,10 @@ struct CellKey {
 
 }  // namespace
 
-Parameters preset_parameters(const std::string& presets_dir, const std::string& name) {
+Parameters preset_parameters(const ProtocolOptions& options, const std::string& name) {
   Parameters p;
-  p.load_json_file(presets_dir + "/" + name + ".json");
+  p.load_json_file(options.presets_dir + "/" + name + ".json");
+  p.set_from_strings(options.preset_overrides);
   return p;
 }
 
@@ -99,7 +100,7 @@ std::vector<CellResult> run_table1(const ProtocolOptions& o) {
   std::vector<CellResult> all;
   const SimConfig lab = SimConfig::from_preset("lab");
   auto part = run_simulated(lab, "lab", [](int g) { return "Pose " + std::to_string(g + 1); }, 0,
-                            preset_parameters(o.presets_dir, "lab"), o);
+                            preset_parameters(o, "lab"), o);
   all.insert(all.end(), part.begin(), part.end());
   const SimConfig field = SimConfig::from_preset("field");
   const std::vector<double> d = field.manhole_distances_m;
@@ -109,7 +110,7 @@ std::vector<CellResult> run_table1(const ProtocolOptions& o) {
                          std::snprintf(buf, sizeof buf, "%gm to plate", d.at(g % d.size()));
                          return std::string(buf);
                        },
-                       0, preset_parameters(o.presets_dir, "field"), o);
+                       0, preset_parameters(o, "field"), o);
   all.insert(all.end(), part.begin(), part.end());
   return all;
 }

@@ -20,11 +20,13 @@ struct ProtocolOptions {
   unsigned seed = 1;
   BaselineOptions baselines;
   std::string presets_dir = TUNNELMAP_SOURCE_DIR "/resources/presets";
+  std::vector<std::string> preset_overrides;  // KEY=VALUE, applied to every preset after loading
   std::function<void(const std::string&)> progress;  // one line per finished cell, may be empty
 };
 
 // PG&C (and the baselines' shared cloud range / template window) parameters of a preset.
-Parameters preset_parameters(const std::string& presets_dir, const std::string& name);
+// The options' preset_overrides are applied on top (ParameterError names a bad one).
+Parameters preset_parameters(const ProtocolOptions& options, const std::string& name);
 
 // Renders `frames_per_group` frames per pose group of `config` (config.frames is overridden)
 // and runs every method on them. `cell_of(group)` names the cell of a pose group (groups with

@@ -43,7 +43,7 @@ void apply_sweep_value(const std::string& name, double v, SimConfig& c) {
 std::vector<CellResult> run_sweeps(const std::vector<SweepSpec>& sweeps, const ProtocolOptions& o) {
   std::vector<CellResult> all;
   for (const SweepSpec& s : sweeps) {
-    const Parameters params = preset_parameters(o.presets_dir, s.preset);
+    const Parameters params = preset_parameters(o, s.preset);
     for (double v : s.values) {
       SimConfig c = SimConfig::from_preset(s.preset);
       apply_sweep_value(s.name, v, c);

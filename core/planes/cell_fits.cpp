@@ -17,6 +17,18 @@ float hsum(__m128 a) {
   return _mm_cvtss_f32(_mm_add_ss(s, _mm_shuffle_ps(s, s, 1)));
 }
 
+// Standard error of a fitted normal (radians) from the scatter about the mean and the residual
+// along the normal: sigma / sqrt(L1), the normal tilts most towards the plane's narrower
+// in-plane direction; sigma^2 = L0 / (n - 3), L0 <= L1 <= L2 the scatter's eigenvalues.
+double normal_standard_error(const double scatter[6], double l0, double cnt) {
+  const double* s = scatter;
+  const double t = s[0] + s[3] + s[5];
+  const double minors = s[0] * s[3] - s[1] * s[1] + s[0] * s[5] - s[2] * s[2] + s[3] * s[5] - s[4] * s[4];
+  const double sum12 = t - l0, prod12 = minors - l0 * sum12;
+  const double l1 = 0.5 * (sum12 - std::sqrt(std::max(0.0, sum12 * sum12 - 4 * prod12)));
+  return (cnt > 3 && l1 > 0) ? std::sqrt(l0 / ((cnt - 3) * l1)) : M_PI;
+}
+
 // A valid point of the cell to take moments about: its centre pixel, else the first valid one.
 bool reference_point(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, Eigen::Vector3f& ref) {
   const Eigen::Vector3f& c = cloud.points[cloud.index((u0 + u1) / 2, (v0 + v1) / 2)];
@@ -32,24 +44,19 @@ bool reference_point(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1
 }  // namespace
 
 void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
-                  double m[11], const std::int32_t* labels, std::int32_t id) {
+                  double m[11]) {
   __m128 n = _mm_setzero_ps(), sx = n, sy = n, sz = n, sxx = n, sxy = n, sxz = n, syy = n, syz = n, szz = n,
          sz3 = n;
   const __m128 rx = _mm_set1_ps(ref.x()), ry = _mm_set1_ps(ref.y()), rz = _mm_set1_ps(ref.z());
   const __m128 one = _mm_set1_ps(1.0f);
   float tail[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-  const __m128i id4 = _mm_set1_epi32(id);
   for (int v = v0; v < v1; ++v) {
     const float* row = cloud.points[cloud.index(0, v)].data();
-    const std::int32_t* lrow = labels ? labels + cloud.index(0, v) : nullptr;
     int u = u0;
     for (; u + 4 <= u1; u += 4) {
       __m128 x, y, z;
       load_xyz4(row + 3 * u, x, y, z);
-      __m128 ok = _mm_cmpeq_ps(z, z);  // NaN marks an invalid pixel
-      if (lrow)
-        ok = _mm_and_ps(ok, _mm_castsi128_ps(_mm_cmpeq_epi32(
-                                _mm_loadu_si128(reinterpret_cast<const __m128i*>(lrow + u)), id4)));
+      const __m128 ok = _mm_cmpeq_ps(z, z);  // NaN marks an invalid pixel
       const __m128 dx = _mm_and_ps(ok, _mm_sub_ps(x, rx)), dy = _mm_and_ps(ok, _mm_sub_ps(y, ry));
       const __m128 dz = _mm_and_ps(ok, _mm_sub_ps(z, rz));
       n = _mm_add_ps(n, _mm_and_ps(ok, one));
@@ -62,7 +69,7 @@ void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, c
     }
     for (; u < u1; ++u) {
       const float* p = row + 3 * u;
-      if (!(p[2] == p[2]) || (lrow && lrow[u] != id)) continue;
+      if (!(p[2] == p[2])) continue;
       const float dx = p[0] - ref.x(), dy = p[1] - ref.y(), dz = p[2] - ref.z();
       const float t[11] = {1, dx, dy, dz, dx * dx, dx * dy, dx * dz, dy * dy, dy * dz, dz * dz, dz * dz * dz};
       for (int k = 0; k < 11; ++k) tail[k] += t[k];
@@ -70,21 +77,6 @@ void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, c
   }
   const __m128 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
   for (int k = 0; k < 11; ++k) m[k] = static_cast<double>(hsum(all[k])) + tail[k];
-}
-
-long moments_about_origin(const double m[11], const Eigen::Vector3f& ref_f, Eigen::Vector3d& sum_p,
-                          double sum_pp[6], double& sum_z3) {
-  const double n = m[0];
-  const double r[3] = {ref_f.x(), ref_f.y(), ref_f.z()};
-  const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-  for (int k = 0; k < 3; ++k) sum_p(k) += n * r[k] + m[1 + k];
-  // sum (r_i + d_i)(r_j + d_j) and sum (r_z + d_z)^3, expanded.
-  for (int k = 0; k < 6; ++k) {
-    const int i = ij[k][0], j = ij[k][1];
-    sum_pp[k] += n * r[i] * r[j] + r[i] * m[1 + j] + r[j] * m[1 + i] + m[4 + k];
-  }
-  sum_z3 += n * r[2] * r[2] * r[2] + 3 * r[2] * r[2] * m[3] + 3 * r[2] * m[9] + m[10];
-  return std::lround(n);
 }
 
 namespace {
@@ -121,14 +113,7 @@ void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, d
   c.mse = std::max(0.0, c.mse_to(nrm, -nrm.dot(c.mean)));  // rounding can dip below 0 on an exact plane
   c.normal = nrm;
   c.planar = c.mse <= max_mse;
-  // The normal tilts most towards the plane's narrower in-plane direction: standard error
-  // sigma / sqrt(L1), with sigma^2 = L0 / (n - 3) and L0 <= L1 <= L2 the scatter's eigenvalues.
-  const double l0 = c.mse * cnt, t = c.scatter[0] + c.scatter[3] + c.scatter[5];
-  const double minors = c.scatter[0] * c.scatter[3] - c.scatter[1] * c.scatter[1] + c.scatter[0] * c.scatter[5] -
-                        c.scatter[2] * c.scatter[2] + c.scatter[3] * c.scatter[5] - c.scatter[4] * c.scatter[4];
-  const double sum12 = t - l0, prod12 = minors - l0 * sum12;
-  const double l1 = 0.5 * (sum12 - std::sqrt(std::max(0.0, sum12 * sum12 - 4 * prod12)));
-  c.normal_se = (cnt > 3 && l1 > 0) ? std::sqrt(l0 / ((cnt - 3) * l1)) : M_PI;
+  c.normal_se = normal_standard_error(c.scatter, c.mse * cnt, cnt);
 }
 
 }  // namespace
@@ -150,6 +135,65 @@ bool smallest_eigenvector(const double s[6], Eigen::Vector3d& v) {
   if (!(len > 0)) return false;
   v /= len;
   return true;
+}
+
+constexpr double kMaxBlockF = 64.0;
+constexpr double kNoiseFloor = 0.5e-3;  // m: below any depth sensor's noise, keeps exact planes comparable
+
+void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
+  const double max_mse = max_rms_m * max_rms_m;
+  // Row sums over 3 cells of each planar cell's count, point and product sums and residual
+  // (12 values: members, n, p, pp, squared distances to its own plane), then the column of three row sums: 6 adds per value instead of 9.
+  constexpr int kSums = 12;
+  std::vector<double>& rows = grid.row_sums;
+  rows.assign(grid.cells.size() * kSums, 0.0);
+  for (int cv = 0; cv < grid.rows; ++cv)
+    for (int cu = 0; cu < grid.cols; ++cu) {
+      const CellFit& f = grid.cells[grid.index(cu, cv)];
+      if (!f.planar) continue;
+      const double v[kSums] = {1.0, static_cast<double>(f.count), f.sum_p.x(), f.sum_p.y(), f.sum_p.z(),
+                               f.sum_pp[0], f.sum_pp[1], f.sum_pp[2], f.sum_pp[3], f.sum_pp[4], f.sum_pp[5],
+                               f.mse * f.count};
+      for (int nu = std::max(0, cu - 1); nu <= std::min(grid.cols - 1, cu + 1); ++nu) {
+        double* r = rows.data() + static_cast<std::size_t>(grid.index(nu, cv)) * kSums;
+        for (int k = 0; k < kSums; ++k) r[k] += v[k];
+      }
+    }
+  for (int cv = 0; cv < grid.rows; ++cv) {
+    for (int cu = 0; cu < grid.cols; ++cu) {
+      CellFit& cell = grid.cells[grid.index(cu, cv)];
+      cell.block_normal = cell.normal;
+      cell.block_se = cell.normal_se;
+      if (!cell.planar) continue;
+      double b[kSums] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+      for (int nv = std::max(0, cv - 1); nv <= std::min(grid.rows - 1, cv + 1); ++nv) {
+        const double* r = rows.data() + static_cast<std::size_t>(grid.index(cu, nv)) * kSums;
+        for (int k = 0; k < kSums; ++k) b[k] += r[k];
+      }
+      if (b[0] < 2) continue;
+      const double cnt = b[1];
+      const Eigen::Vector3d mean(b[2] / cnt, b[3] / cnt, b[4] / cnt);
+      const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+      double scatter[6];
+      for (int k = 0; k < 6; ++k) scatter[k] = b[5 + k] - cnt * mean(ij[k][0]) * mean(ij[k][1]);
+      Eigen::Vector3d n;
+      if (!smallest_eigenvector(scatter, n)) continue;
+      const double spread = n.x() * (n.x() * scatter[0] + 2 * n.y() * scatter[1] + 2 * n.z() * scatter[2]) +
+                            n.y() * (n.y() * scatter[3] + 2 * n.z() * scatter[4]) + n.z() * n.z() * scatter[5];
+      if (spread > max_mse * cnt) continue;
+      // One plane must explain the block nearly as well as a plane per cell does: the residual
+      // it adds, per degree of freedom given up, within kMaxBlockF of the cells' own noise
+      // variance (an F test). Real depth noise is correlated within a cell (disparity
+      // terraces), so flat real walls reach F of 10-30; an 8 mm step between exact cells gives
+      // about 1500 (measured on resources/real-frames and cell_fits_test).
+      const double members = b[0], own = b[11];
+      const double noise = std::max(own / std::max(1.0, cnt - 3 * members), kNoiseFloor * kNoiseFloor);
+      if ((spread - own) / (3 * (members - 1)) > kMaxBlockF * noise) continue;  // keep the cell's own
+      if (n.dot(cell.normal) < 0) n = -n;
+      cell.block_normal = n;
+      cell.block_se = normal_standard_error(scatter, std::max(0.0, spread), cnt);
+    }
+  }
 }
 
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,

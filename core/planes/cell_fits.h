@@ -22,6 +22,10 @@ struct CellFit {
   double mse = 0.0;                                   // mean squared distance to its own plane
   double normal_se = 0.0;  // standard error of the normal's direction (radians), from the fit's residual
   bool planar = false;
+  // The normal of the planar cells of the 3x3 block around this one when they fit one plane
+  // (see smooth_cell_normals), else this cell's own; and its standard error.
+  Eigen::Vector3d block_normal = Eigen::Vector3d::Zero();
+  double block_se = 0.0;
 
   // Mean squared distance of the cell's points to the plane n.x + d = 0 (exact, from moments).
   double mse_to(const Eigen::Vector3d& n, double d) const {
@@ -36,6 +40,7 @@ struct CellGrid {
   int cell_px = 0;  // side of a cell; cells on the right and bottom edge may be smaller
   int cols = 0, rows = 0;
   std::vector<CellFit> cells;  // rows * cols, row-major
+  std::vector<double> row_sums;  // smooth_cell_normals' buffer, kept to avoid allocating per frame
 
   int index(int cu, int cv) const { return cv * cols + cu; }
 };
@@ -45,16 +50,17 @@ struct CellGrid {
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
                        CellGrid& grid);
 
-// Moments about `ref` of the valid points in pixels [u0, u1) x [v0, v1), only those labelled
-// `id` when `labels` (width*height) is given: count, sums of d (3), of d d^T (xx xy xz yy yz
-// zz) and of dz^3, d = p - ref; float sums, so `ref` must lie near the points.
-void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
-                  double m[11], const std::int32_t* labels = nullptr, std::int32_t id = 0);
+// Each planar cell's block normal: the least-squares normal of the planar cells among it and
+// its 8 neighbours, when their points lie within `max_rms_m` RMS of it; else its own normal.
+// Nine cells' points pin the direction down about nine times better than one cell's (three
+// times the points over three times the extent), as a wider window does for pixel normals.
+void smooth_cell_normals(double max_rms_m, CellGrid& grid);
 
-// The same moments as sums about the origin, in double: adds them to `sum_p`, `sum_pp` and
-// `sum_z3`, and returns the count.
-long moments_about_origin(const double m[11], const Eigen::Vector3f& ref, Eigen::Vector3d& sum_p,
-                          double sum_pp[6], double& sum_z3);
+// Moments about `ref` of the valid points in pixels [u0, u1) x [v0, v1): count, sums of d (3),
+// of d d^T (xx xy xz yy yz zz) and of dz^3, d = p - ref; float sums, so `ref` must lie near
+// the points.
+void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
+                  double m[11]);
 
 // Smallest-eigenvalue eigenvector of a symmetric 3x3 matrix given as xx xy xz yy yz zz, by two
 // steps of inverse iteration through the adjugate (exact for a rank-2 matrix, far cheaper than

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <emmintrin.h>
 
+#include "core/planes/border_assignment.h"
 #include "core/planes/segment_statistics.h"
 #include "core/util/sse_xyz.h"
 
@@ -16,6 +17,7 @@ constexpr double kAngleErrors = 2.0;
 constexpr double kContinuitySigmas = 3.0;
 constexpr double kContinuityFloor = 0.4;  // of epsilon: 6 mm at the paper's 15 mm
 constexpr double kCorrelatedNoise = 1.5;
+constexpr std::size_t kRefitFraction = 16;
 
 // Planar cells ordered by their fit, flattest first (bucketed, raster order within a bucket):
 // regions start where the plane is best defined.
@@ -35,22 +37,30 @@ void order_seeds(const CellGrid& grid, double max_mse, CellGrowingScratch& s) {
 // through the mean point p* (the distance test). That plane's normal is the least-squares one
 // of the region's points: over a wall metres long, the mean of noisy cell normals tilts the
 // plane by enough to stop the growth part of the way along (measured: walls split in bands).
+// The mean normal and the plane's offset follow every join; the least-squares direction is
+// refitted whenever the region has grown by a sixteenth since the last fit (it barely turns
+// between: a join changes a large region's moments by little), which saves most eigen-solves.
 struct GrowthPlane {
   Eigen::Vector3d mean_normal;
   Eigen::Vector3d n;
   double d;
+  std::size_t fitted_cells = 0;
+
+  void refit(const PlaneModel& m) {
+    const Eigen::Matrix3d c = m.covariance();
+    const double cov[6] = {c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
+    if (!smallest_eigenvector(cov, n)) n = m.sum_normal().normalized();
+  }
+  void update(const PlaneModel& m, std::size_t cells) {
+    mean_normal = m.sum_normal().normalized();
+    if (cells >= fitted_cells + std::max<std::size_t>(1, fitted_cells / kRefitFraction)) {
+      refit(m);
+      fitted_cells = cells;
+    }
+    if (n.dot(mean_normal) < 0) n = -n;
+    d = -n.dot(m.mean_point());
+  }
 };
-GrowthPlane growth_plane(const PlaneModel& m) {
-  GrowthPlane g;
-  g.mean_normal = m.sum_normal().normalized();
-  const Eigen::Vector3d p = m.mean_point();
-  const Eigen::Matrix3d c = m.covariance();
-  const double cov[6] = {c(0, 0), c(0, 1), c(0, 2), c(1, 1), c(1, 2), c(2, 2)};
-  if (!smallest_eigenvector(cov, g.n)) g.n = g.mean_normal;
-  if (g.n.dot(g.mean_normal) < 0) g.n = -g.n;
-  g.d = -g.n.dot(p);
-  return g;
-}
 
 // Breadth-first over 4-neighbour cells from `seed`; returns with the region's cells in s.queue.
 // The surface runs on without a step from region cell `a` to its neighbour `b`: along the
@@ -67,18 +77,20 @@ bool continuous(const CellFit& a, const CellFit& b, const Eigen::Vector3d& n, do
   return std::abs(off) <= bound;
 }
 
-void grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, double eps,
-                 CellGrowingScratch& s, PlaneModel& model) {
+// Returns the region's least-squares normal (unit, facing like its mean normal).
+Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, double eps,
+                            CellGrowingScratch& s, PlaneModel& model) {
   const auto join = [&](int c) {
     const CellFit& f = grid.cells[c];
-    model.add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3, f.normal);
+    model.add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3, f.block_normal);
     s.cell_labels[c] = id;
     s.queue.push_back(c);
   };
   s.queue.clear();
   model = PlaneModel();
   join(seed);
-  GrowthPlane plane = growth_plane(model);
+  GrowthPlane plane;
+  plane.update(model, 1);
   for (std::size_t head = 0; head < s.queue.size(); ++head) {
     const int c = s.queue[head];
     const int cu = c % grid.cols, cv = c / grid.cols;
@@ -89,17 +101,15 @@ void grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, d
       const CellFit& f = grid.cells[nb];
       // Eq. 2 on the cell: its normal within lambda of the mean normal, and its points (their
       // RMS, exact from the moments) within epsilon of the model plane.
-      if (!f.planar || f.normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2) continue;
+      if (!f.planar || f.block_normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2) continue;
       if (!continuous(grid.cells[c], f, plane.n, eps)) continue;
       join(nb);
-      plane = growth_plane(model);  // eq. 4 after every join
+      plane.update(model, s.queue.size());  // eq. 4 after every join
     }
   }
-}
-
-void include_box(PlaneSegment& p, int u0, int v0, int u1, int v1) {
-  p.bbox_u0 = std::min(p.bbox_u0, u0), p.bbox_v0 = std::min(p.bbox_v0, v0);
-  p.bbox_u1 = std::max(p.bbox_u1, u1), p.bbox_v1 = std::max(p.bbox_v1, v1);
+  if (plane.fitted_cells != s.queue.size()) plane.refit(model);
+  if (plane.n.dot(model.sum_normal()) < 0) plane.n = -plane.n;
+  return plane.n;
 }
 
 // Writes `id` to the valid pixels of [u0, u1) x [v0, v1), 0 to the others.
@@ -120,75 +130,15 @@ void label_valid_pixels(const OrganizedCloud& cloud, int u0, int v0, int u1, int
   }
 }
 
-// Each valid pixel of the cell to the nearest of the candidate planes within eps, four pixels
-// at a time; per candidate: pixels joined, the first one (a reference for the moments) and the
-// bounding box (u0, v0, u1, v1).
-void nearest_plane_labels(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1,
-                          const std::vector<Eigen::Vector4d>& assign_planes, const std::int32_t* cand, int ncand,
-                          float eps, std::int32_t* labels, int joined[], Eigen::Vector3f ref[], int box[][4]) {
-  __m128 nx[9], ny[9], nz[9], nd[9];
-  __m128i id[9];
-  for (int k = 0; k < ncand; ++k) {
-    const Eigen::Vector4d& a = assign_planes[cand[k] - 1];
-    nx[k] = _mm_set1_ps(static_cast<float>(a.x())), ny[k] = _mm_set1_ps(static_cast<float>(a.y()));
-    nz[k] = _mm_set1_ps(static_cast<float>(a.z())), nd[k] = _mm_set1_ps(static_cast<float>(a.w()));
-    id[k] = _mm_set1_epi32(cand[k]);
-  }
-  const __m128 eps4 = _mm_set1_ps(eps), abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-  for (int v = v0; v < v1; ++v) {
-    const float* p = cloud.points[cloud.index(0, v)].data();
-    std::int32_t* l = labels + cloud.index(0, v);
-    int u = u0;
-    for (; u + 4 <= u1; u += 4) {
-      __m128 x, y, z;
-      load_xyz4(p + 3 * u, x, y, z);
-      __m128 best_d = eps4;
-      __m128i best = _mm_setzero_si128();
-      for (int k = 0; k < ncand; ++k) {
-        const __m128 d = _mm_and_ps(abs_mask, _mm_add_ps(_mm_add_ps(_mm_mul_ps(nx[k], x), _mm_mul_ps(ny[k], y)),
-                                                          _mm_add_ps(_mm_mul_ps(nz[k], z), nd[k])));
-        const __m128 closer = _mm_cmple_ps(d, best_d);  // false for NaN (invalid pixels)
-        best_d = _mm_or_ps(_mm_and_ps(closer, d), _mm_andnot_ps(closer, best_d));
-        const __m128i c = _mm_castps_si128(closer);
-        best = _mm_or_si128(_mm_and_si128(c, id[k]), _mm_andnot_si128(c, best));
-      }
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(l + u), best);
-    }
-    for (; u < u1; ++u) {
-      std::int32_t best = 0;
-      float best_d = eps;
-      for (int k = 0; k < ncand; ++k) {
-        const Eigen::Vector4d& a = assign_planes[cand[k] - 1];
-        const float d = std::abs(static_cast<float>(a.x()) * p[3 * u] + static_cast<float>(a.y()) * p[3 * u + 1] +
-                                 static_cast<float>(a.z()) * p[3 * u + 2] + static_cast<float>(a.w()));
-        if (d <= best_d) best_d = d, best = cand[k];
-      }
-      l[u] = best;
-    }
-    // Per candidate: count, first pixel, box (labels just written, still in L1).
-    for (u = u0; u < u1; ++u) {
-      if (l[u] == 0) continue;
-      const int k = static_cast<int>(std::find(cand, cand + ncand, l[u]) - cand);
-      if (joined[k]++ == 0) {
-        ref[k] = cloud.points[cloud.index(u, v)];
-        box[k][0] = box[k][2] = u, box[k][1] = box[k][3] = v;
-      } else {
-        box[k][0] = std::min(box[k][0], u), box[k][2] = std::max(box[k][2], u), box[k][3] = v;
-      }
-    }
-  }
-}
-
-// Every pixel's label, and the final models. A labelled cell with no other plane in its 3x3
+// Every pixel's label and each plane's tally. A labelled cell with no other plane in its 3x3
 // neighbourhood keeps all its valid pixels (it passed the eq. 2 tests as a whole). In any other
 // cell next to a plane each pixel joins the nearest neighbouring plane within epsilon (eq. 2's
-// distance test), or none; the moments of what joined are then taken per plane.
+// distance test), or none.
 void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps, CellGrowingScratch& s,
                    PlaneSegments& out) {
   const int w = cloud.width, c = grid.cell_px;
   out.labels.resize(static_cast<std::size_t>(w) * cloud.height);
   const float epsf = static_cast<float>(eps);
-  double m[11];
   for (int cv = 0; cv < grid.rows; ++cv) {
     const int v0 = cv * c, v1 = std::min(cloud.height, v0 + c);
     for (int cu = 0; cu < grid.cols; ++cu) {
@@ -213,27 +163,14 @@ void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps
       }
       if (own > 0 && ncand == 1) {
         const CellFit& f = grid.cells[ci];
-        s.final_models[own - 1].add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3,
-                                            s.assign_planes[own - 1].head<3>());
-        include_box(out.planes[own - 1], u0, v0, u1 - 1, v1 - 1);
+        PixelTally& t = s.tallies[own - 1];
+        t.count += f.count, t.sum_p += f.sum_p, t.sum_z3 += f.sum_z3;
+        t.include_box(u0, v0, u1 - 1, v1 - 1);
         label_valid_pixels(cloud, u0, v0, u1, v1, own, out.labels.data());
         continue;
       }
-      int joined[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-      Eigen::Vector3f ref[9];
-      int box[9][4];
-      nearest_plane_labels(cloud, u0, v0, u1, v1, s.assign_planes, cand, ncand, epsf, out.labels.data(), joined,
-                           ref, box);
-      for (int k = 0; k < ncand; ++k)
-        if (joined[k] > 0) include_box(out.planes[cand[k] - 1], box[k][0], box[k][1], box[k][2], box[k][3]);
-      for (int k = 0; k < ncand; ++k) {
-        if (joined[k] == 0) continue;
-        cell_moments(cloud, u0, v0, u1, v1, ref[k], m, out.labels.data(), cand[k]);
-        Eigen::Vector3d sum_p = Eigen::Vector3d::Zero();
-        double sum_pp[6] = {0, 0, 0, 0, 0, 0}, sum_z3 = 0;
-        const long n = moments_about_origin(m, ref[k], sum_p, sum_pp, sum_z3);
-        s.final_models[cand[k] - 1].add_moments(n, sum_p, sum_pp, sum_z3, s.assign_planes[cand[k] - 1].head<3>());
-      }
+      assign_to_nearest_plane(cloud, u0, v0, u1, v1, s.assign_planes.data(), cand, ncand, epsf, out.labels.data(),
+                              s.tallies.data());
     }
   }
 }
@@ -256,6 +193,7 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   // epsilon is the room for the noise of the region's model), with half its pixels valid.
   StageTimer fits_timer(out.timings_ms, "cell_fits");
   compute_cell_fits(cloud, c, (c * c + 1) / 2, 0.5 * eps, s.grid);
+  smooth_cell_normals(0.5 * eps, s.grid);
   fits_timer.stop();
   StageTimer grow_timer(out.timings_ms, "grow");
   const CellGrid& grid = s.grid;
@@ -270,7 +208,7 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   s.cos_angle.resize(cells);
   const double lambda = options.angle_deg * M_PI / 180.0;
   for (std::size_t i = 0; i < cells; ++i)
-    s.cos_angle[i] = std::cos(std::min(0.5 * M_PI, lambda + kAngleErrors * grid.cells[i].normal_se));
+    s.cos_angle[i] = std::cos(std::min(0.5 * M_PI, lambda + kAngleErrors * grid.cells[i].block_se));
   const double eps2 = eps * eps;
   const double fxfy = cloud.intrinsics.fx * cloud.intrinsics.fy;
   std::size_t kept = 0;
@@ -278,12 +216,12 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   PlaneModel model;
   for (const std::int32_t seed : s.seeds) {
     if (s.cell_labels[seed] != 0 || s.seeded[seed]) continue;
-    grow_region(grid, seed, next_id, eps2, eps, s, model);
+    const Eigen::Vector3d lsq_normal = grow_region(grid, seed, next_id, eps2, eps, s, model);
     for (const std::int32_t q : s.queue) s.seeded[q] = 1;
     bool keep = model.count() >= options.min_points;
     if (keep) {
       if (kept == out.planes.size()) add_plane_slot(out.planes, pool);
-      fill_segment_statistics(out.planes[kept], model, options, fxfy);
+      fill_segment_statistics(out.planes[kept], model, options, fxfy, lsq_normal);
       keep = out.planes[kept].area_m2 >= options.min_area_m2;
     }
     if (!keep) {  // free again for later regions, but never a seed
@@ -292,10 +230,9 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
     }
     PlaneSegment& plane = out.planes[kept];
     plane.id = next_id;
-    if (s.assign_planes.size() <= kept) s.assign_planes.resize(kept + 1), s.final_models.resize(kept + 1);
-    s.assign_planes[kept] << plane.normal, plane.offset_m;
-    s.final_models[kept] = PlaneModel();
-    plane.bbox_u0 = cloud.width, plane.bbox_v0 = cloud.height, plane.bbox_u1 = -1, plane.bbox_v1 = -1;
+    if (s.assign_planes.size() <= kept) s.assign_planes.resize(kept + 1), s.tallies.resize(kept + 1);
+    s.assign_planes[kept] << plane.normal.cast<float>(), static_cast<float>(plane.offset_m);
+    s.tallies[kept] = PixelTally();
     ++kept;
     ++next_id;
   }
@@ -309,16 +246,17 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   remap.assign(kept + 1, 0);
   std::size_t now = 0;
   for (std::size_t i = 0; i < kept; ++i) {
-    if (s.final_models[i].count() < options.min_points) continue;
+    const PixelTally& all = s.tallies[i];
+    if (all.count < options.min_points) continue;
     if (now != i) std::swap(out.planes[now], out.planes[i]);
     PlaneSegment& plane = out.planes[now];
     // The plane itself (normal, offset, RMS) stays the grown cells' fit: those passed the eq. 2
     // tests as wholes, while border pixels near a corner pass the distance test for both
     // planes and would tilt the fit. Points, centroid and area count every assigned pixel.
-    const PlaneModel& all = s.final_models[i];
-    plane.points = static_cast<int>(all.count());
-    plane.centroid = all.mean_point();
-    plane.area_m2 = std::abs(plane.offset_m) > 1e-9 ? all.sum_z_cubed() / (fxfy * std::abs(plane.offset_m)) : 0.0;
+    plane.points = static_cast<int>(all.count);
+    plane.centroid = all.sum_p / static_cast<double>(all.count);
+    plane.area_m2 = std::abs(plane.offset_m) > 1e-9 ? all.sum_z3 / (fxfy * std::abs(plane.offset_m)) : 0.0;
+    plane.bbox_u0 = all.u0, plane.bbox_v0 = all.v0, plane.bbox_u1 = all.u1, plane.bbox_v1 = all.v1;
     remap[i + 1] = static_cast<std::int32_t>(++now);
     plane.id = static_cast<int>(now);
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/frame/organized_cloud.h"
+#include "core/planes/border_assignment.h"
 #include "core/planes/cell_fits.h"
 #include "core/planes/grow_options.h"
 #include "core/planes/plane_model.h"
@@ -25,8 +26,8 @@ struct CellGrowingScratch {
   std::vector<std::int32_t> queue;        // the growing region's cells
   std::vector<std::int32_t> seeds;        // planar cells, flattest first
   std::vector<std::int32_t> bucket_start;
-  std::vector<PlaneModel> final_models;   // per kept plane: interior cells + assigned border pixels
-  std::vector<Eigen::Vector4d> assign_planes;  // per kept plane: n (unit), d of its cell model
+  std::vector<PixelTally> tallies;         // per kept plane: interior cells + assigned border pixels
+  std::vector<Eigen::Vector4f> assign_planes;  // per kept plane: n (unit), d of its cell model
 };
 
 // Planes (statistics, labels, bounding boxes; no contours) of

@@ -13,5 +13,9 @@ struct GrowOptions;
 // pixel's footprint on the plane is z^3 / (fx fy |n.p|), and n.p = -offset on the plane.
 void fill_segment_statistics(PlaneSegment& plane, const PlaneModel& model, const GrowOptions& options,
                              double fxfy);
+// The same with the model's least-squares normal already known (unit, facing like the mean
+// normal): its RMS is taken along it, no eigen-solver runs.
+void fill_segment_statistics(PlaneSegment& plane, const PlaneModel& model, const GrowOptions& options, double fxfy,
+                             const Eigen::Vector3d& least_squares_normal);
 
 }  // namespace tunnelmap

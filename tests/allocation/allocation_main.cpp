@@ -30,12 +30,14 @@ struct Case {
   std::vector<DepthFrame> frames;
 };
 
-Case make_case(const std::string& preset, unsigned seed, std::vector<int> indices) {
+Case make_case(const std::string& preset, unsigned seed, std::vector<int> indices,
+               const std::vector<std::string>& sets) {
   SimConfig config = SimConfig::from_preset(preset);
   config.seed = seed;
   const TunnelSimulator sim(config);
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
+  params.set_from_strings(sets);
   Case c{preset, Pipeline(params), {}};
   c.pipeline.set_world_up(Eigen::Vector3d::UnitZ());
   for (int i : indices) c.frames.push_back(sim.render(i).frame);
@@ -73,6 +75,7 @@ std::map<std::string, Tally> count_frame(const Pipeline& p, const DepthFrame& f,
 int main(int argc, char** argv) {
   int warmup = 2, rounds = 2;
   std::map<std::string, long long> limit;  // stage -> max calls per frame (absent = no check)
+  std::vector<std::string> sets;           // KEY=VALUE overrides of the presets
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -80,11 +83,13 @@ int main(int argc, char** argv) {
       warmup = std::atoi(argv[++i]);
     } else if (a == "--rounds" && has_value) {
       rounds = std::max(1, std::atoi(argv[++i]));
+    } else if (a == "--set" && has_value) {
+      sets.push_back(argv[++i]);
     } else if (a.rfind("--max-", 0) == 0 && has_value) {
       limit[a.substr(6)] = std::atoll(argv[++i]);
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--warmup N] [--rounds N] [--max-cloud|normals|planes|tunnel|total N]\n",
+                   "usage: %s [--warmup N] [--rounds N] [--set KEY=VALUE] [--max-cloud|normals|planes|tunnel|total N]\n",
                    argv[0]);
       return 2;
     }
@@ -95,8 +100,8 @@ int main(int argc, char** argv) {
   }
 
   std::vector<Case> cases;
-  cases.push_back(make_case("lab", 31, {0, 15}));
-  cases.push_back(make_case("field", 32, {0}));
+  cases.push_back(make_case("lab", 31, {0, 15}, sets));
+  cases.push_back(make_case("field", 32, {0}, sets));
 
   std::map<std::string, long long> worst, sum, bytes;
   int counted = 0;

@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/evaluation/protocol.h"
+#include "core/planes/grow_options.h"
 #include "core/evaluation/report_csv.h"
 #include "core/evaluation/report_markdown.h"
 #include "core/evaluation/report_plot.h"
@@ -335,6 +336,23 @@ TEST(Table1Protocol, ReducedProtocolMeetsTheBounds) {
   }
 }
 
+// The cell-based growing order (grow.cell_px = 8, through the presets' overrides) holds the
+// same acceptance bounds on the reduced protocol.
+TEST(Table1Protocol, CellGrowingOrderMeetsTheBounds) {
+  ProtocolOptions o;
+  o.methods = {Method::Pgc};
+  o.frames_per_cell = 3;
+  o.preset_overrides = {"grow.cell_px=8"};
+  EXPECT_EQ(preset_parameters(o, "lab").get(grow_keys::cell_px), 8);
+  EXPECT_EQ(preset_parameters(o, "field").get(grow_keys::cell_px), 8);
+  const auto rs = run_table1(o);
+  ASSERT_EQ(rs.size(), 6u);
+  for (const BoundCheck& b : check_table1_bounds(rs, false))
+    EXPECT_TRUE(b.pass) << b.name << ": measured " << b.value << ", limit " << b.limit;
+  o.preset_overrides = {"grow.cell_px=99"};
+  EXPECT_THROW(preset_parameters(o, "lab"), ParameterError);
+}
+
 // The speed bound on the paper's full-resolution R&L: one lab frame. The ratio is ~100x here,
 // so load on a CI machine affecting both runs alike does not bring it near 30x.
 TEST(EvaluateCli, WritesTheThreeReportFilesAndRejectsBadOptions) {
@@ -346,6 +364,10 @@ TEST(EvaluateCli, WritesTheThreeReportFilesAndRejectsBadOptions) {
   EXPECT_EQ(testing::count_lines(testing::slurp(tmp.file("out/results.csv"))), 13);
   EXPECT_EQ(testing::run_cli("evaluate --methods pgc,hough --out " + tmp.file("x")).exit_code, 2);
   EXPECT_EQ(testing::run_cli("evaluate --protocol bogus --out " + tmp.file("x")).exit_code, 2);
+  const auto bad_set = testing::run_cli("evaluate --protocol ci --set grow.cell_px=99 --out " + tmp.file("y"));
+  EXPECT_EQ(bad_set.exit_code, 2);
+  EXPECT_NE(bad_set.err.find("grow.cell_px"), std::string::npos) << bad_set.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("y/table1.md")));
   EXPECT_EQ(testing::run_cli("evaluate --dataset " + tmp.file("nowhere") + " --out " + tmp.file("x")).exit_code, 3);
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "core/planes/cell_fits.h"
 #include "core/planes/plane_growing.h"
@@ -104,4 +105,37 @@ TEST(CellGrowing, ReadsNoNormalsAndPlanesCliSkipsThem) {
   EXPECT_FALSE(planes.planes[0].contour.empty());
   o.cell_px = 0;
   EXPECT_TRUE(needs_point_normals(o));
+}
+
+TEST(CellFits, BlockNormalsAreSharperOnAPlaneAndStayTheCellsOwnAcrossAStep) {
+  // A wall 2 m away with 2 mm Gaussian depth noise: the 3x3 block's normal is far closer to the
+  // truth than a single cell's, and its standard error says so.
+  std::mt19937 rng(7);
+  std::normal_distribution<float> noise(0.0f, 0.002f);
+  OrganizedCloud c = hand_cloud(48, 48, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const float z = 2.0f + noise(rng);
+    p = Eigen::Vector3f((u - 24) / 570.0f * z, (v - 24) / 570.0f * z, z);
+  });
+  CellGrid grid;
+  compute_cell_fits(c, 8, 32, 0.0075, grid);
+  smooth_cell_normals(0.0075, grid);
+  double own = 0, block = 0;
+  int interior = 0;
+  for (int cv = 1; cv + 1 < grid.rows; ++cv)
+    for (int cu = 1; cu + 1 < grid.cols; ++cu) {
+      const CellFit& f = grid.cells[grid.index(cu, cv)];
+      ASSERT_TRUE(f.planar);
+      own += std::acos(std::min(1.0, std::abs(f.normal.z())));
+      block += std::acos(std::min(1.0, std::abs(f.block_normal.z())));
+      EXPECT_LT(f.block_se, 0.5 * f.normal_se);
+      ++interior;
+    }
+  ASSERT_EQ(interior, 16);
+  EXPECT_LT(block, 0.4 * own) << "mean tilt, cell " << own / interior << " rad, block " << block / interior;
+  // An exact wall with an 8 mm step at u = 24 (a cell border): the cells beside the step keep
+  // their own (exact) normals; one plane through both sides would tilt.
+  const OrganizedCloud stepped = stepped_wall(48, 48, 24, 0.008);
+  compute_cell_fits(stepped, 8, 32, 0.0075, grid);
+  smooth_cell_normals(0.0075, grid);
+  for (const CellFit& f : grid.cells) EXPECT_NEAR(std::abs(f.block_normal.z()), 1.0, 1e-6);
 }
