@@ -6,6 +6,7 @@
 
 #include <emmintrin.h>
 
+#include "core/planes/cell_moments_avx2.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
@@ -45,6 +46,7 @@ bool reference_point(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1
 
 void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector3f& ref,
                   double m[11]) {
+  if (u1 - u0 >= 8 && cell_moments_avx2_available()) return cell_moments_avx2(cloud, u0, v0, u1, v1, ref, m);
   __m128 n = _mm_setzero_ps(), sx = n, sy = n, sz = n, sxx = n, sxy = n, sxz = n, syy = n, syz = n, szz = n,
          sz3 = n;
   const __m128 rx = _mm_set1_ps(ref.x()), ry = _mm_set1_ps(ref.y()), rz = _mm_set1_ps(ref.z());
@@ -113,7 +115,8 @@ void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, d
   c.mse = std::max(0.0, c.mse_to(nrm, -nrm.dot(c.mean)));  // rounding can dip below 0 on an exact plane
   c.normal = nrm;
   c.planar = c.mse <= max_mse;
-  c.normal_se = normal_standard_error(c.scatter, c.mse * cnt, cnt);
+  // Only the growing reads it, and only of planar cells.
+  c.normal_se = c.planar ? normal_standard_error(c.scatter, c.mse * cnt, cnt) : M_PI;
 }
 
 }  // namespace

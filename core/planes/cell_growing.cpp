@@ -193,8 +193,10 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   // epsilon is the room for the noise of the region's model), with half its pixels valid.
   StageTimer fits_timer(out.timings_ms, "cell_fits");
   compute_cell_fits(cloud, c, (c * c + 1) / 2, 0.5 * eps, s.grid);
-  smooth_cell_normals(0.5 * eps, s.grid);
   fits_timer.stop();
+  StageTimer block_timer(out.timings_ms, "block_normals");
+  smooth_cell_normals(0.5 * eps, s.grid);
+  block_timer.stop();
   StageTimer grow_timer(out.timings_ms, "grow");
   const CellGrid& grid = s.grid;
   const std::size_t cells = grid.cells.size();
@@ -207,8 +209,10 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   // plane passes 95 % of the time).
   s.cos_angle.resize(cells);
   const double lambda = options.angle_deg * M_PI / 180.0;
-  for (std::size_t i = 0; i < cells; ++i)
-    s.cos_angle[i] = std::cos(std::min(0.5 * M_PI, lambda + kAngleErrors * grid.cells[i].block_se));
+  for (std::size_t i = 0; i < cells; ++i)  // only planar cells are ever tested
+    s.cos_angle[i] = grid.cells[i].planar
+                         ? std::cos(std::min(0.5 * M_PI, lambda + kAngleErrors * grid.cells[i].block_se))
+                         : 2.0;
   const double eps2 = eps * eps;
   const double fxfy = cloud.intrinsics.fx * cloud.intrinsics.fy;
   std::size_t kept = 0;

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/planes/cell_fits.h"
+#include "core/planes/cell_moments_avx2.h"
 #include "core/planes/plane_growing.h"
 #include "tests/core/planes/hand_cloud.h"
 
@@ -138,4 +139,27 @@ TEST(CellFits, BlockNormalsAreSharperOnAPlaneAndStayTheCellsOwnAcrossAStep) {
   compute_cell_fits(stepped, 8, 32, 0.0075, grid);
   smooth_cell_normals(0.0075, grid);
   for (const CellFit& f : grid.cells) EXPECT_NEAR(std::abs(f.block_normal.z()), 1.0, 1e-6);
+}
+
+TEST(CellFits, Avx2MomentsMatchTheSseOnesToFloatRounding) {
+  if (!cell_moments_avx2_available()) GTEST_SKIP() << "no AVX2 on this CPU";
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> jitter(-0.01f, 0.01f);
+  OrganizedCloud c = hand_cloud(37, 21, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const float z = 1.5f + 0.002f * u + jitter(rng);
+    p = Eigen::Vector3f((u - 18) / 570.0f * z, (v - 10) / 570.0f * z, z);
+  });
+  c.points[c.index(9, 4)] = tunnelmap::testing::no_normal();
+  const Eigen::Vector3f ref = c.points[c.index(12, 8)];
+  // A cell of 8 columns, one of 13 (a tail) and one of 37 (the whole row).
+  const int boxes[3][4] = {{8, 0, 16, 8}, {3, 2, 16, 19}, {0, 0, 37, 21}};
+  for (const auto& b : boxes) {
+    double sse[11], avx[11];
+    force_sse_cell_moments(true);
+    cell_moments(c, b[0], b[1], b[2], b[3], ref, sse);
+    force_sse_cell_moments(false);
+    cell_moments(c, b[0], b[1], b[2], b[3], ref, avx);
+    EXPECT_EQ(avx[0], sse[0]);
+    for (int k = 1; k < 11; ++k) EXPECT_NEAR(avx[k], sse[k], 1e-5 * (std::abs(sse[k]) + 1e-3)) << "moment " << k;
+  }
 }

@@ -1,0 +1,83 @@
+#include "core/planes/cell_moments_avx2.h"
+
+#include <immintrin.h>
+
+#include <atomic>
+
+namespace tunnelmap {
+
+namespace {
+std::atomic<bool> sse_only{false};
+}  // namespace
+
+bool cell_moments_avx2_available() {
+  static const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
+  return cpu_has_avx2 && !sse_only.load(std::memory_order_relaxed);
+}
+
+void force_sse_cell_moments(bool on) { sse_only.store(on, std::memory_order_relaxed); }
+
+namespace {
+
+#define TM_AVX2 __attribute__((target("avx2")))
+
+TM_AVX2 double hsum8(__m256 v) {
+  const __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+  const __m128 t = _mm_add_ps(s, _mm_movehl_ps(s, s));
+  return _mm_cvtss_f32(_mm_add_ss(t, _mm_shuffle_ps(t, t, 1)));
+}
+
+// Eight xyz triples (24 floats) to x, y, z with each point in the same lane of all three. The
+// lanes hold the points in the order 0 3 6 1 4 7 2 5, which sums do not mind: three blends
+// gather each coordinate, and only y and z need a lane rotation to line up with x.
+TM_AVX2 void load_xyz8(const float* p, __m256& x, __m256& y, __m256& z) {
+  const __m256 a = _mm256_loadu_ps(p), b = _mm256_loadu_ps(p + 8), c = _mm256_loadu_ps(p + 16);
+  // x: a lanes 0 3 6, b lanes 1 4 7, c lanes 2 5 -> points 0 3 6 1 4 7 2 5.
+  x = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x92), c, 0x24);
+  // y: c lanes 0 3 6, a lanes 1 4 7, b lanes 2 5 -> points 5 0 3 6 1 4 7 2.
+  const __m256 yr = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x24), c, 0x49);
+  // z: b lanes 0 3 6, c lanes 1 4 7, a lanes 2 5 -> points 2 5 0 3 6 1 4 7.
+  const __m256 zr = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x49), c, 0x92);
+  y = _mm256_permutevar8x32_ps(yr, _mm256_setr_epi32(1, 2, 3, 4, 5, 6, 7, 0));
+  z = _mm256_permutevar8x32_ps(zr, _mm256_setr_epi32(2, 3, 4, 5, 6, 7, 0, 1));
+}
+
+}  // namespace
+
+TM_AVX2 void cell_moments_avx2(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1,
+                               const Eigen::Vector3f& ref, double m[11]) {
+  __m256 n = _mm256_setzero_ps(), sx = n, sy = n, sz = n, sxx = n, sxy = n, sxz = n, syy = n, syz = n, szz = n,
+         sz3 = n;
+  const __m256 rx = _mm256_set1_ps(ref.x()), ry = _mm256_set1_ps(ref.y()), rz = _mm256_set1_ps(ref.z());
+  const __m256 one = _mm256_set1_ps(1.0f);
+  float tail[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  for (int v = v0; v < v1; ++v) {
+    const float* row = cloud.points[cloud.index(0, v)].data();
+    int u = u0;
+    for (; u + 8 <= u1; u += 8) {
+      __m256 x, y, z;
+      load_xyz8(row + 3 * u, x, y, z);
+      const __m256 ok = _mm256_cmp_ps(z, z, _CMP_ORD_Q);  // NaN marks an invalid pixel
+      const __m256 dx = _mm256_and_ps(ok, _mm256_sub_ps(x, rx)), dy = _mm256_and_ps(ok, _mm256_sub_ps(y, ry));
+      const __m256 dz = _mm256_and_ps(ok, _mm256_sub_ps(z, rz));
+      n = _mm256_add_ps(n, _mm256_and_ps(ok, one));
+      sx = _mm256_add_ps(sx, dx), sy = _mm256_add_ps(sy, dy), sz = _mm256_add_ps(sz, dz);
+      sxx = _mm256_add_ps(sxx, _mm256_mul_ps(dx, dx)), sxy = _mm256_add_ps(sxy, _mm256_mul_ps(dx, dy));
+      sxz = _mm256_add_ps(sxz, _mm256_mul_ps(dx, dz)), syy = _mm256_add_ps(syy, _mm256_mul_ps(dy, dy));
+      syz = _mm256_add_ps(syz, _mm256_mul_ps(dy, dz));
+      const __m256 dzz = _mm256_mul_ps(dz, dz);
+      szz = _mm256_add_ps(szz, dzz), sz3 = _mm256_add_ps(sz3, _mm256_mul_ps(dzz, dz));
+    }
+    for (; u < u1; ++u) {
+      const float* p = row + 3 * u;
+      if (!(p[2] == p[2])) continue;
+      const float dx = p[0] - ref.x(), dy = p[1] - ref.y(), dz = p[2] - ref.z();
+      const float t[11] = {1, dx, dy, dz, dx * dx, dx * dy, dx * dz, dy * dy, dy * dz, dz * dz, dz * dz * dz};
+      for (int k = 0; k < 11; ++k) tail[k] += t[k];
+    }
+  }
+  const __m256 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
+  for (int k = 0; k < 11; ++k) m[k] = hsum8(all[k]) + tail[k];
+}
+
+}  // namespace tunnelmap
