@@ -2,24 +2,20 @@
 
 #include <immintrin.h>
 
-#include <atomic>
 #include <cstring>
 #include <limits>
 
+#include "core/util/avx2_dispatch.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
 
 namespace {
-std::atomic<bool> sse_only{false};
+Avx2Dispatch dispatch;
 }  // namespace
 
-bool normals_avx2_available() {
-  static const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
-  return cpu_has_avx2 && !sse_only.load(std::memory_order_relaxed);
-}
-
-void force_sse_normals(bool on) { sse_only.store(on, std::memory_order_relaxed); }
+bool normals_avx2_available() { return dispatch.use_avx2(); }
+void force_sse_normals(bool on) { dispatch.force_sse(on); }
 
 namespace {
 

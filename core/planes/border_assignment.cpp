@@ -4,6 +4,8 @@
 #include <cmath>
 #include <emmintrin.h>
 
+#include "core/planes/border_assignment_avx2.h"
+#include "core/planes/border_assignment_parts.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
@@ -16,8 +18,6 @@ float horizontal_sum(__m128 v) {
   return (f[0] + f[1]) + (f[2] + f[3]);
 }
 
-int lowest_bit(std::uint32_t b) { return __builtin_ctz(b); }
-int highest_bit(std::uint32_t b) { return 31 - __builtin_clz(b); }
 
 }  // namespace
 
@@ -39,6 +39,7 @@ constexpr int kAnyCount = 0;
 template <int N>
 void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, const Eigen::Vector4f* planes,
                  const std::int32_t* cand, int ncand_runtime, float eps, std::int32_t* labels, PixelTally* tallies) {
+  using namespace border_assignment;
   const int ncand = N == kAnyCount ? ncand_runtime : N;
   constexpr int M = N == kAnyCount ? kMaxCandidates : N;
   __m128 nx[M], ny[M], nz[M], nd[M];
@@ -46,14 +47,13 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
   // Per candidate: float sums over the cell (a few hundred points at most: float keeps them to
   // well under a micrometre), and the columns and rows it won.
   __m128 sn[M], sx[M], sy[M], sz[M], sz3[M];
-  std::uint32_t cols[M];
-  int row0[M], row1[M];
+  ScalarSums tail[M];
+  WonBox box[M];
   for (int k = 0; k < ncand; ++k) {
     const Eigen::Vector4f& a = planes[cand[k] - 1];
     nx[k] = _mm_set1_ps(a.x()), ny[k] = _mm_set1_ps(a.y()), nz[k] = _mm_set1_ps(a.z()), nd[k] = _mm_set1_ps(a.w());
     id[k] = _mm_set1_epi32(cand[k]);
     sn[k] = sx[k] = sy[k] = sz[k] = sz3[k] = _mm_setzero_ps();
-    cols[k] = 0, row0[k] = -1, row1[k] = -1;
   }
   const __m128 eps4 = _mm_set1_ps(eps), abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
   const __m128 one = _mm_set1_ps(1.0f);
@@ -86,37 +86,14 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
         sz[k] = _mm_add_ps(sz[k], _mm_and_ps(won, z)), sz3[k] = _mm_add_ps(sz3[k], _mm_and_ps(won, z3));
       }
     }
-    for (; u < u1; ++u) {
-      const float x = p[3 * u], y = p[3 * u + 1], z = p[3 * u + 2];
-      int best = -1;
-      float best_d = eps;
-      for (int k = 0; k < ncand; ++k) {
-        const Eigen::Vector4f& a = planes[cand[k] - 1];
-        const float d = std::abs(a.x() * x + a.y() * y + a.z() * z + a.w());
-        if (d <= best_d) best_d = d, best = k;  // false for NaN
-      }
-      l[u] = best < 0 ? 0 : cand[best];
-      if (best < 0) continue;
-      row_bits[best] |= 1u << (u - u0);
-      sn[best] = _mm_add_ss(sn[best], one);
-      sx[best] = _mm_add_ss(sx[best], _mm_set_ss(x)), sy[best] = _mm_add_ss(sy[best], _mm_set_ss(y));
-      sz[best] = _mm_add_ss(sz[best], _mm_set_ss(z)), sz3[best] = _mm_add_ss(sz3[best], _mm_set_ss(z * z * z));
-    }
-    for (int k = 0; k < ncand; ++k) {
-      if (row_bits[k] == 0) continue;
-      cols[k] |= row_bits[k];
-      if (row0[k] < 0) row0[k] = v;
-      row1[k] = v;
-    }
+    assign_row_tail(p, u, u1, u0, planes, cand, ncand, eps, l, row_bits, tail);
+    for (int k = 0; k < ncand; ++k) box[k].add_row(row_bits[k], v);
   }
-  for (int k = 0; k < ncand; ++k) {
-    if (cols[k] == 0) continue;
-    PixelTally& t = tallies[cand[k] - 1];
-    t.count += std::lround(horizontal_sum(sn[k]));
-    t.sum_p += Eigen::Vector3d(horizontal_sum(sx[k]), horizontal_sum(sy[k]), horizontal_sum(sz[k]));
-    t.sum_z3 += horizontal_sum(sz3[k]);
-    t.include_box(u0 + lowest_bit(cols[k]), row0[k], u0 + highest_bit(cols[k]), row1[k]);
-  }
+  for (int k = 0; k < ncand; ++k)
+    add_to_tally(tallies[cand[k] - 1],
+                 {horizontal_sum(sn[k]), horizontal_sum(sx[k]), horizontal_sum(sy[k]), horizontal_sum(sz[k]),
+                  horizontal_sum(sz3[k])},
+                 tail[k], u0, box[k]);
 }
 
 }  // namespace
@@ -124,6 +101,8 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
 void assign_to_nearest_plane(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1,
                              const Eigen::Vector4f* planes, const std::int32_t* cand, int ncand, float eps,
                              std::int32_t* labels, PixelTally* tallies) {
+  if (u1 - u0 >= 8 && border_assignment_avx2_available())
+    return assign_to_nearest_plane_avx2(cloud, u0, v0, u1, v1, planes, cand, ncand, eps, labels, tallies);
   switch (ncand) {
     case 1: return assign_cell<1>(cloud, u0, v0, u1, v1, planes, cand, ncand, eps, labels, tallies);
     case 2: return assign_cell<2>(cloud, u0, v0, u1, v1, planes, cand, ncand, eps, labels, tallies);

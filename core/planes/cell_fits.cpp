@@ -146,7 +146,8 @@ constexpr double kNoiseFloor = 0.5e-3;  // m: below any depth sensor's noise, ke
 void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
   const double max_mse = max_rms_m * max_rms_m;
   // Row sums over 3 cells of each planar cell's count, point and product sums and residual
-  // (12 values: members, n, p, pp, squared distances to its own plane), then the column of three row sums: 6 adds per value instead of 9.
+  // (12 values: members, n, p, pp, squared distances to its own plane), then the column of
+  // three row sums: 6 adds per value instead of 9.
   constexpr int kSums = 12;
   std::vector<double>& rows = grid.row_sums;
   rows.assign(grid.cells.size() * kSums, 0.0);

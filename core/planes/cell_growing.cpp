@@ -72,7 +72,8 @@ bool continuous(const CellFit& a, const CellFit& b, const Eigen::Vector3d& n, do
   const double off = n.dot(b.mean - a.mean);
   // Depth noise is correlated within a cell (disparity quantisation terraces), so the means
   // scatter more than sigma / sqrt(n): 1.5 times the cells' own RMS is allowed too.
-  const double bound = std::max({kContinuityFloor * eps, kContinuitySigmas * std::sqrt(a.mse / a.count + b.mse / b.count),
+  const double bound = std::max({kContinuityFloor * eps,
+                                 kContinuitySigmas * std::sqrt(a.mse / a.count + b.mse / b.count),
                                  kCorrelatedNoise * std::sqrt(0.5 * (a.mse + b.mse))});
   return std::abs(off) <= bound;
 }
@@ -101,7 +102,8 @@ Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, dou
       const CellFit& f = grid.cells[nb];
       // Eq. 2 on the cell: its normal within lambda of the mean normal, and its points (their
       // RMS, exact from the moments) within epsilon of the model plane.
-      if (!f.planar || f.block_normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2) continue;
+      if (!f.planar || f.block_normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2)
+        continue;
       if (!continuous(grid.cells[c], f, plane.n, eps)) continue;
       join(nb);
       plane.update(model, s.queue.size());  // eq. 4 after every join

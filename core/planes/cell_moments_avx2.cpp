@@ -2,20 +2,18 @@
 
 #include <immintrin.h>
 
-#include <atomic>
+
+#include "core/util/avx2_dispatch.h"
+#include "core/util/avx2_xyz.h"
 
 namespace tunnelmap {
 
 namespace {
-std::atomic<bool> sse_only{false};
+Avx2Dispatch dispatch;
 }  // namespace
 
-bool cell_moments_avx2_available() {
-  static const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
-  return cpu_has_avx2 && !sse_only.load(std::memory_order_relaxed);
-}
-
-void force_sse_cell_moments(bool on) { sse_only.store(on, std::memory_order_relaxed); }
+bool cell_moments_avx2_available() { return dispatch.use_avx2(); }
+void force_sse_cell_moments(bool on) { dispatch.force_sse(on); }
 
 namespace {
 
@@ -25,21 +23,6 @@ TM_AVX2 double hsum8(__m256 v) {
   const __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
   const __m128 t = _mm_add_ps(s, _mm_movehl_ps(s, s));
   return _mm_cvtss_f32(_mm_add_ss(t, _mm_shuffle_ps(t, t, 1)));
-}
-
-// Eight xyz triples (24 floats) to x, y, z with each point in the same lane of all three. The
-// lanes hold the points in the order 0 3 6 1 4 7 2 5, which sums do not mind: three blends
-// gather each coordinate, and only y and z need a lane rotation to line up with x.
-TM_AVX2 void load_xyz8(const float* p, __m256& x, __m256& y, __m256& z) {
-  const __m256 a = _mm256_loadu_ps(p), b = _mm256_loadu_ps(p + 8), c = _mm256_loadu_ps(p + 16);
-  // x: a lanes 0 3 6, b lanes 1 4 7, c lanes 2 5 -> points 0 3 6 1 4 7 2 5.
-  x = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x92), c, 0x24);
-  // y: c lanes 0 3 6, a lanes 1 4 7, b lanes 2 5 -> points 5 0 3 6 1 4 7 2.
-  const __m256 yr = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x24), c, 0x49);
-  // z: b lanes 0 3 6, c lanes 1 4 7, a lanes 2 5 -> points 2 5 0 3 6 1 4 7.
-  const __m256 zr = _mm256_blend_ps(_mm256_blend_ps(a, b, 0x49), c, 0x92);
-  y = _mm256_permutevar8x32_ps(yr, _mm256_setr_epi32(1, 2, 3, 4, 5, 6, 7, 0));
-  z = _mm256_permutevar8x32_ps(zr, _mm256_setr_epi32(2, 3, 4, 5, 6, 7, 0, 1));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Border-cell assignment: every pixel of a cell to the nearest candidate plane within epsilon,
 // with what each plane gained tallied on the way (count, point sums, z^3, bounding box),
-// checked pixel by pixel against a plain scalar reference for 1 to 9 candidates.
+// checked pixel by pixel against a plain scalar reference for 1 to 9 candidates, on the SSE
+// and the AVX2 kernel.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "core/planes/border_assignment.h"
+#include "core/planes/border_assignment_avx2.h"
 #include "tests/core/planes/hand_cloud.h"
 
 using namespace tunnelmap;
@@ -41,8 +43,12 @@ Scene random_scene(unsigned seed, int nplanes) {
 
 TEST(BorderAssignment, MatchesAScalarReferenceForEveryCandidateCount) {
   const float eps = 0.015f;
+  // Both kernels where the CPU has AVX2 (the SSE one is forced for the first pass).
+  for (const bool sse : {true, false})
   for (int ncand = 1; ncand <= 9; ++ncand) {
     SCOPED_TRACE(ncand);
+    force_sse_border_assignment(sse);
+    SCOPED_TRACE(border_assignment_avx2_available() ? "AVX2" : "SSE");
     const Scene s = random_scene(40u + ncand, 9);
     // Candidates are ids 1..9 in a shuffled order, a subset of them offered.
     const std::int32_t order[9] = {7, 2, 9, 4, 1, 8, 3, 6, 5};
@@ -87,9 +93,11 @@ TEST(BorderAssignment, MatchesAScalarReferenceForEveryCandidateCount) {
       EXPECT_EQ(tallies[i].v1, expected[i].v1);
     }
   }
+  force_sse_border_assignment(false);
 }
 
 TEST(BorderAssignment, TalliesAddUpOverCells) {
+  force_sse_border_assignment(false);
   // Two cells side by side, one plane: the second call extends the first's box and sums.
   OrganizedCloud c = hand_cloud(16, 8, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
     p = Eigen::Vector3f(0.01f * u, 0.01f * v, u < 12 ? 1.0f : 1.5f);  // u >= 12: 0.5 m behind
