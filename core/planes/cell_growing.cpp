@@ -100,8 +100,8 @@ Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, dou
     for (int nb : next) {
       if (nb < 0 || s.cell_labels[nb] != 0) continue;
       const CellFit& f = grid.cells[nb];
-      // Eq. 2 on the cell: its normal within lambda of the mean normal, and its points (their
-      // RMS, exact from the moments) within epsilon of the model plane.
+      // Eq. 2 on the cell: its block normal (cell_fits.h) within lambda of the mean normal, and
+      // its points (their RMS, exact from the moments) within epsilon of the model plane.
       if (!f.planar || f.block_normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2)
         continue;
       if (!continuous(grid.cells[c], f, plane.n, eps)) continue;
