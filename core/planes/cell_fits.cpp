@@ -7,6 +7,7 @@
 #include <emmintrin.h>
 
 #include "core/planes/cell_moments_avx2.h"
+#include "core/planes/cell_moments_tail.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
@@ -69,13 +70,7 @@ void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, c
       const __m128 dzz = _mm_mul_ps(dz, dz);
       szz = _mm_add_ps(szz, dzz), sz3 = _mm_add_ps(sz3, _mm_mul_ps(dzz, dz));
     }
-    for (; u < u1; ++u) {
-      const float* p = row + 3 * u;
-      if (!(p[2] == p[2])) continue;
-      const float dx = p[0] - ref.x(), dy = p[1] - ref.y(), dz = p[2] - ref.z();
-      const float t[11] = {1, dx, dy, dz, dx * dx, dx * dy, dx * dz, dy * dy, dy * dz, dz * dz, dz * dz * dz};
-      for (int k = 0; k < 11; ++k) tail[k] += t[k];
-    }
+    add_tail_moments(row, u, u1, ref, tail);
   }
   const __m128 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
   for (int k = 0; k < 11; ++k) m[k] = static_cast<double>(hsum(all[k])) + tail[k];

@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 
+#include "core/planes/cell_moments_tail.h"
 #include "core/util/avx2_dispatch.h"
 #include "core/util/avx2_xyz.h"
 
@@ -51,13 +52,7 @@ TM_AVX2 void cell_moments_avx2(const OrganizedCloud& cloud, int u0, int v0, int 
       const __m256 dzz = _mm256_mul_ps(dz, dz);
       szz = _mm256_add_ps(szz, dzz), sz3 = _mm256_add_ps(sz3, _mm256_mul_ps(dzz, dz));
     }
-    for (; u < u1; ++u) {
-      const float* p = row + 3 * u;
-      if (!(p[2] == p[2])) continue;
-      const float dx = p[0] - ref.x(), dy = p[1] - ref.y(), dz = p[2] - ref.z();
-      const float t[11] = {1, dx, dy, dz, dx * dx, dx * dy, dx * dz, dy * dy, dy * dz, dz * dz, dz * dz * dz};
-      for (int k = 0; k < 11; ++k) tail[k] += t[k];
-    }
+    add_tail_moments(row, u, u1, ref, tail);
   }
   const __m256 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
   for (int k = 0; k < 11; ++k) m[k] = hsum8(all[k]) + tail[k];
