@@ -213,10 +213,12 @@ recall::RunTally run(const Options& o, const std::string& preset, int grid_step,
       pipeline.run(frame.frame, result);
       t.score += score_segmentation(result.planes, frame.surface_id, result.cloud, scoring, &details);
       ++t.frames;
-      // Pixels of each surface that carry a normal (the growing's raw material).
+      // Pixels of each surface that carry a normal (the growing's raw material); the cell order
+      // computes no per-pixel normals and counts none.
       normal_pixels.assign(65536, 0);
-      for (std::size_t k = 0; k < frame.surface_id.size(); ++k)
-        if (!std::isnan(result.cloud.normals[k].x())) ++normal_pixels[frame.surface_id[k]];
+      if (result.cloud.normals.size() == frame.surface_id.size())
+        for (std::size_t k = 0; k < frame.surface_id.size(); ++k)
+          if (!std::isnan(result.cloud.normals[k].x())) ++normal_pixels[frame.surface_id[k]];
       for (const SurfaceDetail& d : details) {
         const SimSurface* surface = sim.surface(d.id);
         t.add_surface(d, surface ? surface->name : "?", normal_pixels[d.id]);
