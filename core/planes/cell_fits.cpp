@@ -78,9 +78,10 @@ void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, c
 
 namespace {
 
-void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, double max_mse, CellFit& c) {
+// The cell's moments, mean and least-squares plane (normal and mse); planarity comes later.
+void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, CellFit& c) {
   c.count = static_cast<int>(std::lround(m[0]));
-  c.planar = false;
+  c.fitted = c.quiet = c.planar = false;
   c.normal.setZero();
   c.mse = 0.0;
   if (c.count == 0) {
@@ -109,9 +110,23 @@ void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, d
   if (nrm.dot(c.mean) > 0) nrm = -nrm;  // face the camera
   c.mse = std::max(0.0, c.mse_to(nrm, -nrm.dot(c.mean)));  // rounding can dip below 0 on an exact plane
   c.normal = nrm;
-  c.planar = c.mse <= max_mse;
-  // Only the growing reads it, and only of planar cells.
-  c.normal_se = c.planar ? normal_standard_error(c.scatter, c.mse * cnt, cnt) : M_PI;
+  c.fitted = true;
+}
+
+// The frame's depth noise as sigma = c z^2 (a structured-light sensor's disparity noise grows
+// with the square of the range): c is the lower quartile of the fitted cells' RMS / z^2. Flat
+// surfaces set it in any scene with some flat surface at some range; edges and clutter only
+// raise the upper quantiles. 0 with too few fitted cells to tell.
+double noise_coefficient(const CellGrid& grid, std::vector<double>& ratios) {
+  constexpr double kQuantile = 0.25;
+  constexpr std::size_t kMinCells = 16;
+  ratios.clear();
+  for (const CellFit& c : grid.cells)
+    if (c.fitted && c.mean.z() > 0) ratios.push_back(std::sqrt(c.mse) / (c.mean.z() * c.mean.z()));
+  if (ratios.size() < kMinCells) return 0.0;
+  const auto q = ratios.begin() + static_cast<std::ptrdiff_t>(kQuantile * static_cast<double>(ratios.size() - 1));
+  std::nth_element(ratios.begin(), q, ratios.end());
+  return *q;
 }
 
 }  // namespace
@@ -138,12 +153,11 @@ bool smallest_eigenvector(const double s[6], Eigen::Vector3d& v) {
 constexpr double kMaxBlockF = 64.0;
 constexpr double kNoiseFloor = 0.5e-3;  // m: below any depth sensor's noise, keeps exact planes comparable
 
-void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
-  const double max_mse = max_rms_m * max_rms_m;
-  // Row sums over 3 cells of each planar cell's count, point and product sums and residual
-  // (12 values: members, n, p, pp, squared distances to its own plane), then the column of
-  // three row sums: 6 adds per value instead of 9.
-  constexpr int kSums = 12;
+void smooth_cell_normals(CellGrid& grid) {
+  // Row sums over 3 cells of each planar cell's count, point and product sums, residual and
+  // bound (13 values: members, n, p, pp, squared distances to its own plane, n * max_mse), then
+  // the column of three row sums: 6 adds per value instead of 9.
+  constexpr int kSums = 13;
   std::vector<double>& rows = grid.row_sums;
   rows.assign(grid.cells.size() * kSums, 0.0);
   for (int cv = 0; cv < grid.rows; ++cv)
@@ -152,7 +166,7 @@ void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
       if (!f.planar) continue;
       const double v[kSums] = {1.0, static_cast<double>(f.count), f.sum_p.x(), f.sum_p.y(), f.sum_p.z(),
                                f.sum_pp[0], f.sum_pp[1], f.sum_pp[2], f.sum_pp[3], f.sum_pp[4], f.sum_pp[5],
-                               f.mse * f.count};
+                               f.mse * f.count, f.max_mse * f.count};
       for (int nu = std::max(0, cu - 1); nu <= std::min(grid.cols - 1, cu + 1); ++nu) {
         double* r = rows.data() + static_cast<std::size_t>(grid.index(nu, cv)) * kSums;
         for (int k = 0; k < kSums; ++k) r[k] += v[k];
@@ -163,8 +177,9 @@ void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
       CellFit& cell = grid.cells[grid.index(cu, cv)];
       cell.block_normal = cell.normal;
       cell.block_se = cell.normal_se;
+      cell.block_fitted = false;
       if (!cell.planar) continue;
-      double b[kSums] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+      double b[kSums] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
       for (int nv = std::max(0, cv - 1); nv <= std::min(grid.rows - 1, cv + 1); ++nv) {
         const double* r = rows.data() + static_cast<std::size_t>(grid.index(cu, nv)) * kSums;
         for (int k = 0; k < kSums; ++k) b[k] += r[k];
@@ -179,7 +194,7 @@ void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
       if (!smallest_eigenvector(scatter, n)) continue;
       const double spread = n.x() * (n.x() * scatter[0] + 2 * n.y() * scatter[1] + 2 * n.z() * scatter[2]) +
                             n.y() * (n.y() * scatter[3] + 2 * n.z() * scatter[4]) + n.z() * n.z() * scatter[5];
-      if (spread > max_mse * cnt) continue;
+      if (spread > b[12]) continue;  // beyond the members' planarity bounds
       // One plane must explain the block nearly as well as a plane per cell does: the residual
       // it adds, per degree of freedom given up, within kMaxBlockF of the cells' own noise
       // variance (an F test). Real depth noise is correlated within a cell (disparity
@@ -191,18 +206,23 @@ void smooth_cell_normals(double max_rms_m, CellGrid& grid) {
       if (n.dot(cell.normal) < 0) n = -n;
       cell.block_normal = n;
       cell.block_se = normal_standard_error(scatter, std::max(0.0, spread), cnt);
+      cell.block_fitted = true;
     }
   }
+  // A cell planar only within the noise bound has too little extent for its own normal (at 3 m
+  // an 8-pixel cell spans 4 cm against 1 cm of noise, and its fitted normal is off by 70-80
+  // degrees on the simulated end wall): it stays planar only with a block plane's normal.
+  for (CellFit& cell : grid.cells)
+    if (cell.planar && !cell.quiet && !cell.block_fitted) cell.planar = false, cell.normal_se = M_PI;
 }
 
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
-                       CellGrid& grid) {
+                       CellGrid& grid, double noise_multiple) {
   const int c = std::max(2, cell_px);
   grid.cell_px = c;
   grid.cols = (cloud.width + c - 1) / c;
   grid.rows = (cloud.height + c - 1) / c;
   grid.cells.resize(static_cast<std::size_t>(grid.cols) * grid.rows);
-  const double max_mse = max_rms_m * max_rms_m;
   double m[11];
   for (int cv = 0; cv < grid.rows; ++cv) {
     const int v0 = cv * c, v1 = std::min(cloud.height, v0 + c);
@@ -212,12 +232,22 @@ void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, 
       Eigen::Vector3f ref;
       if (!reference_point(cloud, u0, v0, u1, v1, ref)) {
         std::fill(m, m + 11, 0.0);
-        fit_cell(m, Eigen::Vector3f::Zero(), min_valid, max_mse, cell);
+        fit_cell(m, Eigen::Vector3f::Zero(), min_valid, cell);
         continue;
       }
       cell_moments(cloud, u0, v0, u1, v1, ref, m);
-      fit_cell(m, ref, min_valid, max_mse, cell);
+      fit_cell(m, ref, min_valid, cell);
     }
+  }
+  const double max_mse = max_rms_m * max_rms_m;
+  grid.noise_per_m2 = noise_multiple > 0 ? noise_coefficient(grid, grid.ratios) : 0.0;
+  for (CellFit& cell : grid.cells) {
+    const double noise = noise_multiple * grid.noise_per_m2 * cell.mean.z() * cell.mean.z();
+    cell.max_mse = std::max(max_mse, noise * noise);
+    cell.quiet = cell.fitted && cell.mse <= max_mse;
+    cell.planar = cell.fitted && cell.mse <= cell.max_mse;
+    // Only the growing reads it, and only of planar cells.
+    cell.normal_se = cell.planar ? normal_standard_error(cell.scatter, cell.mse * cell.count, cell.count) : M_PI;
   }
 }
 

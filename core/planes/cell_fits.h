@@ -21,11 +21,15 @@ struct CellFit {
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();   // unit, facing the camera; zero if not planar
   double mse = 0.0;                                   // mean squared distance to its own plane
   double normal_se = 0.0;  // standard error of the normal's direction (radians), from the fit's residual
-  bool planar = false;
+  bool fitted = false;     // enough valid points for a plane: normal and mse are set
+  bool quiet = false;      // within the fixed RMS bound (compute_cell_fits' max_rms_m)
+  double max_mse = 0.0;    // the planarity bound on mse: the fixed one or the noise bound at this range
+  bool planar = false;     // quiet, or within the noise bound with a block normal (smooth_cell_normals)
   // The normal of the planar cells of the 3x3 block around this one when they fit one plane
-  // (see smooth_cell_normals), else this cell's own; and its standard error.
+  // (block_fitted, see smooth_cell_normals), else this cell's own; and its standard error.
   Eigen::Vector3d block_normal = Eigen::Vector3d::Zero();
   double block_se = 0.0;
+  bool block_fitted = false;
 
   // Mean squared distance of the cell's points to the plane n.x + d = 0 (exact, from moments).
   double mse_to(const Eigen::Vector3d& n, double d) const {
@@ -41,20 +45,27 @@ struct CellGrid {
   int cols = 0, rows = 0;
   std::vector<CellFit> cells;  // rows * cols, row-major
   std::vector<double> row_sums;  // smooth_cell_normals' buffer, kept to avoid allocating per frame
+  std::vector<double> ratios;    // compute_cell_fits' buffer
+  double noise_per_m2 = 0.0;     // the frame's depth noise, sigma / z^2 (1/m); 0 when not estimated
 
   int index(int cu, int cv) const { return cv * cols + cu; }
 };
 
-// A cell is planar when at least `min_valid` of its pixels have a point and the RMS distance
-// to its least-squares plane is at most `max_rms_m`.
+// A cell is fitted when at least `min_valid` of its pixels have a point. It is quiet when the
+// RMS distance to its least-squares plane is at most `max_rms_m`, and planar when that RMS is
+// at most the larger of `max_rms_m` and `noise_multiple` times the frame's depth noise at its
+// range (sigma = c z^2, c estimated from the cells; 0 = no noise bound): far away a flat
+// surface's noise alone exceeds any fixed bound.
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
-                       CellGrid& grid);
+                       CellGrid& grid, double noise_multiple = 0.0);
 
 // Each planar cell's block normal: the least-squares normal of the planar cells among it and
-// its 8 neighbours, when their points lie within `max_rms_m` RMS of it; else its own normal.
+// its 8 neighbours, when their points lie within the members' planarity bounds of it (mean
+// squared distance); else its own normal. A planar cell that is not quiet and has no block
+// normal stops being planar.
 // Nine cells' points pin the direction down about nine times better than one cell's (three
 // times the points over three times the extent), as a wider window does for pixel normals.
-void smooth_cell_normals(double max_rms_m, CellGrid& grid);
+void smooth_cell_normals(CellGrid& grid);
 
 // Moments about `ref` of the valid points in pixels [u0, u1) x [v0, v1): count, sums of d (3),
 // of d d^T (xx xy xz yy yz zz) and of dz^3, d = p - ref; float sums, so `ref` must lie near

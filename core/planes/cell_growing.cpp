@@ -18,6 +18,12 @@ constexpr double kContinuitySigmas = 3.0;
 constexpr double kContinuityFloor = 0.4;  // of epsilon: 6 mm at the paper's 15 mm
 constexpr double kCorrelatedNoise = 1.5;
 constexpr std::size_t kRefitFraction = 16;
+// Noisy cells (planar by the noise bound only, cell_fits.h): the bound is this many times the
+// frame's noise sigma at the cell's range; a region of noisy cells alone needs this many cells
+// to stand for a surface, and takes its plane from the block normals for its first cells.
+constexpr double kNoiseMultiple = 2.5;
+constexpr std::size_t kMinNoisyRegionCells = 4;
+constexpr std::size_t kNoisySeedCells = 9;
 
 // Planar cells ordered by their fit, flattest first (bucketed, raster order within a bucket):
 // regions start where the plane is best defined.
@@ -45,6 +51,9 @@ struct GrowthPlane {
   Eigen::Vector3d n;
   double d;
   std::size_t fitted_cells = 0;
+  // A noisy seed's own least-squares plane is noise: the plane follows the mean of the block
+  // normals until the region spans a block.
+  bool noisy_seed = false;
 
   void refit(const PlaneModel& m) {
     const Eigen::Matrix3d c = m.covariance();
@@ -53,7 +62,9 @@ struct GrowthPlane {
   }
   void update(const PlaneModel& m, std::size_t cells) {
     mean_normal = m.sum_normal().normalized();
-    if (cells >= fitted_cells + std::max<std::size_t>(1, fitted_cells / kRefitFraction)) {
+    if (noisy_seed && cells < kNoisySeedCells) {
+      n = mean_normal;
+    } else if (cells >= fitted_cells + std::max<std::size_t>(1, fitted_cells / kRefitFraction)) {
       refit(m);
       fitted_cells = cells;
     }
@@ -78,12 +89,37 @@ bool continuous(const CellFit& a, const CellFit& b, const Eigen::Vector3d& n, do
   return std::abs(off) <= bound;
 }
 
-// Returns the region's least-squares normal (unit, facing like its mean normal).
-Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, double eps,
-                            CellGrowingScratch& s, PlaneModel& model) {
+// The eq. 2 tests for neighbour cell `f` of a region with plane `plane`: its block normal
+// (cell_fits.h) within lambda (widened by its standard error, `cos_angle`) of the mean normal;
+// for a quiet cell its points' RMS to the model plane (exact, from the moments) within epsilon;
+// for a noisy cell its centroid within epsilon of the plane (its RMS is the sensor's noise, and
+// its own fit too poor to say how much of the RMS the model plane adds).
+bool joins(const CellFit& f, const GrowthPlane& plane, double cos_angle, double eps2) {
+  if (!f.planar || f.block_normal.dot(plane.mean_normal) < cos_angle) return false;
+  if (f.quiet) return f.mse_to(plane.n, plane.d) <= eps2;
+  const double off = plane.n.dot(f.mean) + plane.d;
+  return off * off <= eps2;
+}
+
+struct GrownRegion {
+  Eigen::Vector3d normal;  // least-squares, unit, facing like the mean normal
+  bool has_quiet_cell = false;
+};
+
+// Grows a region from `seed`; returns with its cells in s.queue and all their points in `model`.
+// In a region seeded by a quiet cell, noisy cells join the region but not its plane: their
+// points go into `model` only when the growth is over, so they neither tilt the plane the
+// tests use nor the reported normal.
+GrownRegion grow_region(const CellGrid& grid, int seed, std::int32_t id, double eps2, double eps,
+                        CellGrowingScratch& s, PlaneModel& model) {
+  GrownRegion region;
+  PlaneModel& noisy = s.noisy_cells;
+  noisy = PlaneModel();
+  const bool quiet_seed = grid.cells[seed].quiet;
   const auto join = [&](int c) {
     const CellFit& f = grid.cells[c];
-    model.add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3, f.block_normal);
+    (quiet_seed && !f.quiet ? noisy : model).add_moments(f.count, f.sum_p, f.sum_pp, f.sum_z3, f.block_normal);
+    region.has_quiet_cell |= f.quiet;
     s.cell_labels[c] = id;
     s.queue.push_back(c);
   };
@@ -91,6 +127,7 @@ Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, dou
   model = PlaneModel();
   join(seed);
   GrowthPlane plane;
+  plane.noisy_seed = !quiet_seed;
   plane.update(model, 1);
   for (std::size_t head = 0; head < s.queue.size(); ++head) {
     const int c = s.queue[head];
@@ -100,18 +137,16 @@ Eigen::Vector3d grow_region(const CellGrid& grid, int seed, std::int32_t id, dou
     for (int nb : next) {
       if (nb < 0 || s.cell_labels[nb] != 0) continue;
       const CellFit& f = grid.cells[nb];
-      // Eq. 2 on the cell: its block normal (cell_fits.h) within lambda of the mean normal, and
-      // its points (their RMS, exact from the moments) within epsilon of the model plane.
-      if (!f.planar || f.block_normal.dot(plane.mean_normal) < s.cos_angle[nb] || f.mse_to(plane.n, plane.d) > eps2)
-        continue;
-      if (!continuous(grid.cells[c], f, plane.n, eps)) continue;
+      if (!joins(f, plane, s.cos_angle[nb], eps2) || !continuous(grid.cells[c], f, plane.n, eps)) continue;
       join(nb);
       plane.update(model, s.queue.size());  // eq. 4 after every join
     }
   }
   if (plane.fitted_cells != s.queue.size()) plane.refit(model);
   if (plane.n.dot(model.sum_normal()) < 0) plane.n = -plane.n;
-  return plane.n;
+  if (noisy.count() > 0) model.merge(noisy);
+  region.normal = plane.n;
+  return region;
 }
 
 // Writes `id` to the valid pixels of [u0, u1) x [v0, v1), 0 to the others.
@@ -191,13 +226,14 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   }
   const int c = std::max(2, options.cell_px);
   const double eps = options.distance_m;
-  // A cell is planar when its own fit leaves its points within epsilon/2 on RMS (the rest of
-  // epsilon is the room for the noise of the region's model), with half its pixels valid.
+  // A cell is quiet when its own fit leaves its points within epsilon/2 on RMS (the rest of
+  // epsilon is the room for the noise of the region's model), with half its pixels valid; a
+  // farther cell whose RMS is the sensor's noise at its range is planar too (noisy).
   StageTimer fits_timer(out.timings_ms, "cell_fits");
-  compute_cell_fits(cloud, c, (c * c + 1) / 2, 0.5 * eps, s.grid);
+  compute_cell_fits(cloud, c, (c * c + 1) / 2, 0.5 * eps, s.grid, kNoiseMultiple);
   fits_timer.stop();
   StageTimer block_timer(out.timings_ms, "block_normals");
-  smooth_cell_normals(0.5 * eps, s.grid);
+  smooth_cell_normals(s.grid);
   block_timer.stop();
   StageTimer grow_timer(out.timings_ms, "grow");
   const CellGrid& grid = s.grid;
@@ -222,12 +258,13 @@ void extract_planes_by_cells(const OrganizedCloud& cloud, const GrowOptions& opt
   PlaneModel model;
   for (const std::int32_t seed : s.seeds) {
     if (s.cell_labels[seed] != 0 || s.seeded[seed]) continue;
-    const Eigen::Vector3d lsq_normal = grow_region(grid, seed, next_id, eps2, eps, s, model);
+    const GrownRegion region = grow_region(grid, seed, next_id, eps2, eps, s, model);
     for (const std::int32_t q : s.queue) s.seeded[q] = 1;
-    bool keep = model.count() >= options.min_points;
+    bool keep = model.count() >= options.min_points &&
+                (region.has_quiet_cell || s.queue.size() >= kMinNoisyRegionCells);
     if (keep) {
       if (kept == out.planes.size()) add_plane_slot(out.planes, pool);
-      fill_segment_statistics(out.planes[kept], model, options, fxfy, lsq_normal);
+      fill_segment_statistics(out.planes[kept], model, options, fxfy, region.normal);
       keep = out.planes[kept].area_m2 >= options.min_area_m2;
     }
     if (!keep) {  // free again for later regions, but never a seed

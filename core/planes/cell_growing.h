@@ -28,6 +28,7 @@ struct CellGrowingScratch {
   std::vector<std::int32_t> bucket_start;
   std::vector<PixelTally> tallies;         // per kept plane: interior cells + assigned border pixels
   std::vector<Eigen::Vector4f> assign_planes;  // per kept plane: n (unit), d of its cell model
+  PlaneModel noisy_cells;                  // the growing region's noisy cells (cell_growing.cpp)
 };
 
 // Planes (statistics, labels, bounding boxes; no contours) of

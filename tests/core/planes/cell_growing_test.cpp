@@ -27,6 +27,9 @@ OrganizedCloud stepped_wall(int w, int h, int step_u, double step_m) {
   return c;
 }
 
+// Angle (radians) between a normal and the camera axis, either way round.
+double tilt_from_z(const Eigen::Vector3d& n) { return std::acos(std::min(1.0, std::abs(n.z()))); }
+
 }  // namespace
 
 TEST(CellFits, SmallestEigenvectorIsThePlaneNormal) {
@@ -119,15 +122,15 @@ TEST(CellFits, BlockNormalsAreSharperOnAPlaneAndStayTheCellsOwnAcrossAStep) {
   });
   CellGrid grid;
   compute_cell_fits(c, 8, 32, 0.0075, grid);
-  smooth_cell_normals(0.0075, grid);
+  smooth_cell_normals(grid);
   double own = 0, block = 0;
   int interior = 0;
   for (int cv = 1; cv + 1 < grid.rows; ++cv)
     for (int cu = 1; cu + 1 < grid.cols; ++cu) {
       const CellFit& f = grid.cells[grid.index(cu, cv)];
       ASSERT_TRUE(f.planar);
-      own += std::acos(std::min(1.0, std::abs(f.normal.z())));
-      block += std::acos(std::min(1.0, std::abs(f.block_normal.z())));
+      own += tilt_from_z(f.normal);
+      block += tilt_from_z(f.block_normal);
       EXPECT_LT(f.block_se, 0.5 * f.normal_se);
       ++interior;
     }
@@ -137,7 +140,7 @@ TEST(CellFits, BlockNormalsAreSharperOnAPlaneAndStayTheCellsOwnAcrossAStep) {
   // their own (exact) normals; one plane through both sides would tilt.
   const OrganizedCloud stepped = stepped_wall(48, 48, 24, 0.008);
   compute_cell_fits(stepped, 8, 32, 0.0075, grid);
-  smooth_cell_normals(0.0075, grid);
+  smooth_cell_normals(grid);
   for (const CellFit& f : grid.cells) EXPECT_NEAR(std::abs(f.block_normal.z()), 1.0, 1e-6);
 }
 
@@ -161,5 +164,99 @@ TEST(CellFits, Avx2MomentsMatchTheSseOnesToFloatRounding) {
     cell_moments(c, b[0], b[1], b[2], b[3], ref, avx);
     EXPECT_EQ(avx[0], sse[0]);
     for (int k = 1; k < 11; ++k) EXPECT_NEAR(avx[k], sse[k], 1e-5 * (std::abs(sse[k]) + 1e-3)) << "moment " << k;
+  }
+}
+
+namespace {
+
+// Three fronto-parallel walls side by side at 1.0, 2.0 and 3.5 m (each a third of the width),
+// with Gaussian depth noise of sigma = 1 mm * z^2: 1, 4 and 12.25 mm.
+OrganizedCloud walls_at_three_ranges(int w, int h, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> unit(0.0f, 1.0f);
+  OrganizedCloud c = hand_cloud(w, h, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const float wall = u < w / 3 ? 1.0f : u < 2 * w / 3 ? 2.0f : 3.5f;
+    const float z = wall + 0.001f * wall * wall * unit(rng);
+    p = Eigen::Vector3f((u - w / 2.0f) / 570.0f * z, (v - h / 2.0f) / 570.0f * z, z);
+  });
+  c.intrinsics.fx = c.intrinsics.fy = 570.0;
+  c.intrinsics.cx = w / 2.0, c.intrinsics.cy = h / 2.0;
+  return c;
+}
+
+}  // namespace
+
+TEST(CellFits, NoiseBoundFollowsTheRangeSquared) {
+  const OrganizedCloud c = walls_at_three_ranges(192, 96, 11);
+  CellGrid grid;
+  // Without a noise bound only the walls whose noise is within 4 mm RMS are planar.
+  compute_cell_fits(c, 8, 32, 0.004, grid);
+  EXPECT_EQ(grid.noise_per_m2, 0.0);
+  EXPECT_TRUE(grid.cells[grid.index(2, 5)].planar);    // 1 m
+  EXPECT_FALSE(grid.cells[grid.index(20, 5)].planar);  // 3.5 m: 12 mm of noise
+  // The estimate is the cells' lower-quartile RMS / z^2: about 1 mm / m^2 here (a cell's own
+  // fit takes 3 of its 64 degrees of freedom, so a little less).
+  compute_cell_fits(c, 8, 32, 0.004, grid, 2.5);
+  EXPECT_NEAR(grid.noise_per_m2, 0.00095, 0.0001);
+  int far = 0, far_planar = 0;
+  for (const CellFit& f : grid.cells) {
+    EXPECT_TRUE(f.fitted);
+    if (f.mean.z() < 1.5) EXPECT_TRUE(f.quiet);
+    if (f.mean.z() > 3.0) ++far, far_planar += f.planar && !f.quiet;
+  }
+  EXPECT_EQ(far_planar, far);
+  smooth_cell_normals(grid);
+  // The far cells keep their planarity through block normals, which are within 4 degrees of
+  // the truth and several times closer than the cells' own normals.
+  double own = 0, block = 0;
+  int n = 0;
+  for (int cv = 1; cv + 1 < grid.rows; ++cv)
+    for (int cu = 17; cu + 1 < grid.cols; ++cu) {
+      const CellFit& f = grid.cells[grid.index(cu, cv)];
+      ASSERT_TRUE(f.planar && f.block_fitted) << cu << "," << cv;
+      EXPECT_LT(tilt_from_z(f.block_normal), 4.0 * M_PI / 180.0) << cu << "," << cv;
+      own += tilt_from_z(f.normal);
+      block += tilt_from_z(f.block_normal);
+      ++n;
+    }
+  ASSERT_EQ(n, 60);
+  EXPECT_LT(block, 0.25 * own) << "mean tilt, cell " << own / n << " rad, block " << block / n;
+}
+
+TEST(CellFits, RoughCellsNearbyStayNonPlanarUnderTheNoiseBound) {
+  // A wall at 1 m whose right half is rough (uniform +-15 mm). An 8-pixel cell at 1 m spans
+  // only 4 mm RMS across, so its least-squares plane leaves about that much whatever the
+  // roughness: above the 2 mm bound and 2.5 times the 1 mm noise at 1 m, so neither bound
+  // makes it planar.
+  std::mt19937 rng(5);
+  std::normal_distribution<float> noise(0.0f, 0.001f);
+  std::uniform_real_distribution<float> rough(-0.015f, 0.015f);
+  const OrganizedCloud c = hand_cloud(128, 64, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
+    const float z = 1.0f + noise(rng) + (u >= 64 ? rough(rng) : 0.0f);
+    p = Eigen::Vector3f((u - 64) / 570.0f * z, (v - 32) / 570.0f * z, z);
+  });
+  CellGrid grid;
+  compute_cell_fits(c, 8, 32, 0.002, grid, 2.5);
+  smooth_cell_normals(grid);
+  for (int cv = 0; cv < grid.rows; ++cv)
+    for (int cu = 0; cu < grid.cols; ++cu) EXPECT_EQ(grid.cells[grid.index(cu, cv)].planar, cu < 8) << cu << "," << cv;
+}
+
+TEST(CellGrowing, FarWallNoisierThanHalfEpsilonIsOnePlane) {
+  // epsilon 8 mm (the lab preset): the 3.5 m wall's 12 mm noise puts every one of its cells
+  // above epsilon / 2, yet it is one plane with the wall's normal and offset, as are the others.
+  const OrganizedCloud c = walls_at_three_ranges(192, 96, 13);
+  GrowOptions o;
+  o.cell_px = 8;
+  o.distance_m = 0.008;
+  const PlaneSegments planes = extract_planes(c, o);
+  ASSERT_EQ(planes.planes.size(), 3u);
+  for (const PlaneSegment& p : planes.planes) {
+    EXPECT_GT(std::abs(p.normal.z()), std::cos(1.0 * M_PI / 180.0));
+    const double off = std::abs(p.offset_m);
+    const double wall = off < 1.5 ? 1.0 : off < 2.75 ? 2.0 : 3.5;
+    EXPECT_NEAR(off, wall, 0.003) << off;
+    // Each wall is 64 x 96 pixels; the far one loses at most its border pixels beyond epsilon.
+    EXPECT_GE(p.points, wall < 3 ? 64 * 96 * 0.97 : 64 * 96 * 0.8) << "wall at " << wall << " m";
   }
 }
