@@ -83,12 +83,15 @@ void DepthViewWidget::paintEvent(QPaintEvent*) {
   p.setPen(QPen(Qt::white, 2));
   p.setBrush(Qt::white);
   for (const QPoint& uv : picked_pixels_) p.drawEllipse(widget_point(uv.x(), uv.y()), 3.5, 3.5);
-  if (picked_pixels_.size() == 2 && measurement_.distance_m()) {
-    const QPoint a = widget_point(picked_pixels_[0].x(), picked_pixels_[0].y());
-    const QPoint b = widget_point(picked_pixels_[1].x(), picked_pixels_[1].y());
+  p.setFont(QFont(font().family(), 10, QFont::Bold));
+  // Measurement k's picks are picked_pixels_[2k] and [2k + 1].
+  for (std::size_t k = 0; k < measurements_.size() && 2 * k + 1 < picked_pixels_.size(); ++k) {
+    if (!measurements_[k].distance_m()) continue;
+    const QPoint a = widget_point(picked_pixels_[2 * k].x(), picked_pixels_[2 * k].y());
+    const QPoint b = widget_point(picked_pixels_[2 * k + 1].x(), picked_pixels_[2 * k + 1].y());
+    p.setPen(QPen(Qt::white, 2));
     p.drawLine(a, b);
-    p.setFont(QFont(font().family(), 10, QFont::Bold));
-    const QString text = QString::fromStdString(measurement_.label());
+    const QString text = QString::fromStdString(measurements_[k].label());
     const QPoint mid = (a + b) / 2 + QPoint(6, -6);
     p.setPen(Qt::black);
     p.drawText(mid + QPoint(1, 1), text);
@@ -109,9 +112,14 @@ void DepthViewWidget::set_measuring(bool on) {
   setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
+const scene::Measurement& DepthViewWidget::measurement() const {
+  static const scene::Measurement none;
+  return measurements_.empty() ? none : measurements_.back();
+}
+
 void DepthViewWidget::clear_measurement() {
   if (picked_pixels_.empty()) return;
-  measurement_ = scene::Measurement();
+  measurements_.clear();
   picked_pixels_.clear();
   update();
   emit measurementChanged(QString());
@@ -130,12 +138,11 @@ bool DepthViewWidget::pick_pixel(int u, int v) {
       if (du * du + dv * dv < best_r2) best_r2 = du * du + dv * dv, best_u = uu, best_v = vv;
     }
   if (best_u < 0) return false;
-  if (picked_pixels_.size() >= 2) picked_pixels_.clear();
-  measurement_.add(c.points[c.index(best_u, best_v)].cast<double>());
+  scene::add_pick(measurements_, c.points[c.index(best_u, best_v)].cast<double>());
   picked_pixels_.push_back(QPoint(best_u, best_v));
   update();
-  emit measurementChanged(measurement_.distance_m() ? QString::fromStdString(measurement_.label())
-                                                     : tr("first point picked"));
+  const scene::Measurement& last = measurements_.back();
+  emit measurementChanged(last.distance_m() ? QString::fromStdString(last.label()) : tr("first point picked"));
   return true;
 }
 

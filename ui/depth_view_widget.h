@@ -27,12 +27,14 @@ class DepthViewWidget : public QWidget {
 
   // Measure tool (View > Measure in 3D, shared with the 3D view): while on, a left click picks
   // the 3D point of the clicked pixel (the nearest pixel with depth within 3 px); two picks
-  // give their distance in space, drawn over the image.
+  // give their distance in space, drawn over the image. As in the 3D view, the next pick
+  // starts another measurement and the earlier ones stay drawn until cleared.
   void set_measuring(bool on);
   bool measuring() const { return measuring_; }
   bool pick_pixel(int u, int v);  // what a click on pixel (u, v) does; false without depth
-  const scene::Measurement& measurement() const { return measurement_; }
-  void clear_measurement();
+  const scene::Measurement& measurement() const;  // the latest (empty if none)
+  const std::vector<scene::Measurement>& measurements() const { return measurements_; }  // oldest first
+  void clear_measurement();  // all of them
   QPoint widget_point(int u, int v) const;  // the centre of pixel (u, v) on screen
 
  signals:
@@ -50,8 +52,8 @@ class DepthViewWidget : public QWidget {
   QImage image_;
   std::shared_ptr<const scene::ProcessedFrame> frame_;
   bool measuring_ = false;
-  scene::Measurement measurement_;
-  std::vector<QPoint> picked_pixels_;  // (u, v) of each pick
+  std::vector<scene::Measurement> measurements_;
+  std::vector<QPoint> picked_pixels_;  // (u, v) of each pick of every measurement, in order
 };
 
 }  // namespace tunnelmap::ui

@@ -274,7 +274,7 @@ class DepthViewMeasureTest : public QObject {
   Q_OBJECT
 
  private slots:
-  void twoClicksOnTheDepthImageMeasureInSpace() {
+  void clicksOnTheDepthImageMeasureInSpaceAndKeepEarlierMeasurements() {
     tunnelmap::ui::DepthViewWidget view;
     view.resize(640, 480);
     view.show();
@@ -307,8 +307,29 @@ class DepthViewMeasureTest : public QObject {
     const QPoint mid = (view.widget_point(l.x(), l.y()) + view.widget_point(r.x(), r.y())) / 2;
     const QRgb c = img.pixel(mid);
     QVERIFY2(qRed(c) > 240 && qGreen(c) > 240 && qBlue(c) > 240, qPrintable(QColor(c).name()));
+    // Two more picks, 1 m apart along the left wall: a second measurement, the first one kept.
+    const QPoint near = pixel_of({-0.5, 0.0, 1.2}), far = pixel_of({-0.5, 0.0, 2.2});
+    QTest::mouseClick(&view, Qt::LeftButton, {}, view.widget_point(near.x(), near.y()));
+    QCOMPARE(int(view.measurements().size()), 2);
+    QVERIFY(!view.measurement().distance_m());
+    QTest::mouseClick(&view, Qt::LeftButton, {}, view.widget_point(far.x(), far.y()));
+    QCOMPARE(changed.count(), 4);
+    QVERIFY(std::abs(*view.measurements().front().distance_m() - *d) < 1e-12);
+    const auto along = view.measurement().distance_m();
+    QVERIFY(along.has_value());
+    QVERIFY2(std::abs(*along - 1.0) < 0.03, qPrintable(QString::number(*along)));
+    // Both segments are drawn.
+    const QImage both = view.grab().toImage();
+    const QPoint mid2 = (view.widget_point(near.x(), near.y()) + view.widget_point(far.x(), far.y())) / 2;
+    for (const QPoint& m : {mid, mid2}) {
+      const QRgb px = both.pixel(m);
+      QVERIFY2(qRed(px) > 240 && qGreen(px) > 240 && qBlue(px) > 240, qPrintable(QColor(px).name()));
+    }
     view.clear_measurement();
     QVERIFY(view.measurement().picks.empty());
+    QVERIFY(view.measurements().empty());
+    const QRgb cleared = view.grab().toImage().pixel(mid2);
+    QVERIFY2(qRed(cleared) < 240 || qGreen(cleared) < 240 || qBlue(cleared) < 240, qPrintable(QColor(cleared).name()));
   }
 };
 
