@@ -16,6 +16,7 @@
 #include "ui/scene/dimension_labels.h"
 #include "ui/scene/image_checks.h"
 #include "ui/scene/scene_colors.h"
+#include "ui/scene/scene_legend.h"
 #include "ui/scene/tunnel_scene.h"
 
 namespace tunnelmap {
@@ -162,6 +163,34 @@ TEST(SceneReadability, TheLegendListsOnlyTheShownLayersInRowsOfAtLeast16Pixels) 
   // A large view gets larger rows (up to 20 px).
   EXPECT_EQ(scene::legend_row_px(300), 16);
   EXPECT_EQ(scene::legend_row_px(1000), 20);
+}
+
+TEST(SceneReadability, InANarrowViewTheLegendMovesUpAndLeavesTheWidthLabelClear) {
+  // A 3D dock 320 px wide (the GUI at 1200 px): the legend goes to the upper-right corner, so
+  // the lower half of the picture, with the width label, is the same with or without it.
+  const auto pf = test::make_synthetic_tunnel();
+  const std::vector<Layer> map = {Layer::Planes, Layer::Boundary, Layer::Traversable, Layer::Forbidden};
+  std::vector<Layer> with_legend = map;
+  with_legend.push_back(Layer::Legend);
+  const auto without = shoot(pf, scene::ViewPreset::Along, map, 320, 475).image;
+  const auto with = shoot(pf, scene::ViewPreset::Along, with_legend, 320, 475).image;
+  int lower = 0, upper_right = 0;
+  for (int y = 0; y < with.height; ++y)
+    for (int x = 0; x < with.width; ++x) {
+      const std::uint8_t *a = with.at(x, y), *b = without.at(x, y);
+      const bool differs = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 30;
+      if (!differs) continue;
+      if (y >= with.height / 2) ++lower;
+      else if (x >= with.width / 2) ++upper_right;
+    }
+  EXPECT_EQ(lower, 0);
+  EXPECT_GT(upper_right, 1000);  // the legend's text and swatches
+  // Wide views keep it in the lower-right corner.
+  scene::SceneLegend legend(vtkSmartPointer<vtkRenderer>::New());
+  legend.fit(320, 475);
+  EXPECT_TRUE(legend.at_top());
+  legend.fit(1280, 720);
+  EXPECT_FALSE(legend.at_top());
 }
 
 TEST(SceneReadability, TheFloorCarriesADistanceGridLabelledEveryMetre) {

@@ -96,7 +96,10 @@ void SceneLegend::fit(int width, int height) {
   box_w_ = std::min(width / 2, row * 8);  // "unassigned" plus its swatch
   box_h_ = std::min(height - 8, row * std::max(1, entries()) + 6);
   const double w = static_cast<double>(box_w_) / width, h = static_cast<double>(box_h_) / height;
-  actor_->GetPositionCoordinate()->SetValue(1.0 - w - 8.0 / width, 8.0 / height);
+  // The width label sits at the middle of the floor's edge, about 150 px wide: in a view
+  // narrower than twice the box plus that, a box in the lower-right corner would cover it.
+  at_top_ = width < 2 * box_w_ + 200;
+  actor_->GetPositionCoordinate()->SetValue(1.0 - w - 8.0 / width, at_top_ ? 1.0 - h - 8.0 / height : 8.0 / height);
   actor_->GetPosition2Coordinate()->SetValue(w, h);
 }
 

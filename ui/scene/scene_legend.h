@@ -20,8 +20,10 @@ class SceneLegend {
   void set_layers(const LegendLayers& shown);
   void set_visible(bool visible);
   void set_background(bool on);
-  // Places the box in the lower-right corner of a `width` x `height` viewport (pixels).
+  // Places the box in the lower-right corner of a `width` x `height` viewport (pixels), or in
+  // the upper-right one when the view is too narrow for it to clear the width label.
   void fit(int width, int height);
+  bool at_top() const { return at_top_; }
 
   int entries() const { return actor_->GetNumberOfEntries(); }
   vtkLegendBoxActor* actor() const { return actor_; }
@@ -35,6 +37,7 @@ class SceneLegend {
   vtkSmartPointer<vtkLegendBoxActor> actor_;
   bool visible_ = true;
   int box_w_ = 0, box_h_ = 0;
+  bool at_top_ = false;
 };
 
 // Row height of the legend for a viewport `height` pixels high.
