@@ -10,6 +10,7 @@
 
 #include "app/render/osmesa_window.h"
 #include "tests/ui/synthetic_tunnel.h"
+#include <vtkMapper2D.h>
 #include <vtkPointData.h>
 #include <vtkStringArray.h>
 
@@ -233,6 +234,22 @@ TEST(SceneReadability, WidthAndHeightAreWrittenOnTheBoundaryWithTheirSource) {
   // A height the frame took from the context says so.
   pf.result.map.height_source = DimensionSource::Context;
   EXPECT_EQ(texts(scene::make_dimension_labels(pf.result.map))[1], "height 0.800 m (context)");
+  // Seen from the top the height runs along the line of sight, from the side the width: each
+  // view writes only the other one.
+  EXPECT_EQ(texts(scene::make_dimension_labels(pf.result.map, scene::ViewPreset::Top)),
+            (std::vector<std::string>{"width 1.000 m"}));
+  EXPECT_EQ(texts(scene::make_dimension_labels(pf.result.map, scene::ViewPreset::Side)),
+            (std::vector<std::string>{"height 0.800 m (context)"}));
+  // The scene swaps them with the view.
+  scene::TunnelScene sc;
+  sc.update(pf.scene_data());
+  const auto shown = [&] {
+    return texts(vtkPolyData::SafeDownCast(sc.dimension_label_actor()->GetMapper()->GetInputDataObject(0, 0)));
+  };
+  sc.apply_view(scene::ViewPreset::Top);
+  EXPECT_EQ(shown(), (std::vector<std::string>{"width 1.000 m"}));
+  sc.apply_view(scene::ViewPreset::Along);
+  EXPECT_EQ(shown().size(), 2u);
   pf.result.map.detected = false;
   EXPECT_EQ(scene::make_dimension_labels(pf.result.map)->GetNumberOfPoints(), 0);
 }

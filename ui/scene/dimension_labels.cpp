@@ -41,12 +41,12 @@ bool usable(const Wall& w) {
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map) {
+vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map, ViewPreset view) {
   LabelPoints labels;
   if (!map.detected) return labels.polydata();
   auto add = [&](const Eigen::Vector3d& p, const std::string& s) { labels.add(p, s); };
   const Wall& floor = usable(map.wall(WallClass::Bottom)) ? map.wall(WallClass::Bottom) : map.wall(WallClass::Top);
-  if (map.has_width() && usable(floor)) {
+  if (map.has_width() && usable(floor) && view != ViewPreset::Side) {
     // Left of the floor's middle: the text runs to the right, away from the legend's corner.
     Eigen::Vector3d to_left = Eigen::Vector3d::Zero();
     if (map.wall(WallClass::Left).found) to_left = -map.wall(WallClass::Left).normal;
@@ -54,7 +54,7 @@ vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map) {
     add(along_wall(floor, 0.5) + 0.3 * map.width_m * to_left, text("width", map.width_m, map.width_source));
   }
   const Wall& side = usable(map.wall(WallClass::Left)) ? map.wall(WallClass::Left) : map.wall(WallClass::Right);
-  if (map.has_height() && usable(side)) add(along_wall(side, 0.5), text("height", map.height_m, map.height_source));
+  if (map.has_height() && usable(side) && view != ViewPreset::Top) add(along_wall(side, 0.5), text("height", map.height_m, map.height_source));
   return labels.polydata();
 }
 

@@ -6,10 +6,13 @@
 #include <vtkSmartPointer.h>
 
 #include "core/tunnel/tunnel_map.h"
+#include "ui/scene/camera_presets.h"
 
 namespace tunnelmap::scene {
 
-// One vertex per label with the string array "label"; empty when the map is not detected.
-vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map);
+// One vertex per label with the string array "label"; empty when the map is not detected. A
+// dimension that runs along `view`'s line of sight is left out: seen from the top the height
+// edge shrinks to a point and its text sat on the width's, and seen from the side the width's.
+vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map, ViewPreset view = ViewPreset::Along);
 
 }  // namespace tunnelmap::scene

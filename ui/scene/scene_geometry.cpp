@@ -1,7 +1,6 @@
 #include "ui/scene/scene_geometry.h"
 
 #include "ui/scene/cloud_polydata.h"
-#include "ui/scene/dimension_labels.h"
 #include "ui/scene/frustum_polydata.h"
 #include "ui/scene/station_grid.h"
 #include "ui/scene/tunnel_polydata.h"
@@ -21,7 +20,6 @@ SceneGeometry build_geometry(const SceneData& data, const GeometryOptions& optio
   const StationGrid grid = make_station_grid(g.map);
   g.grid = grid.lines;
   g.grid_labels = grid.labels;
-  g.dimension_labels = make_dimension_labels(g.map);
   const Intrinsics k = data.frame ? data.frame->intrinsics
                                   : (data.cloud ? data.cloud->intrinsics : Intrinsics::primesense_vga());
   g.frustum = make_frustum_polydata(k, 0.3);

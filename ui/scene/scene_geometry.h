@@ -23,8 +23,6 @@ struct SceneGeometry {
   vtkSmartPointer<vtkPolyData> planes, boundary, traversable, forbidden, frustum;
   // The distance grid on the floor and its labels (station_grid.h); null: none.
   vtkSmartPointer<vtkPolyData> grid, grid_labels;
-  // Width and height written on the boundary (dimension_labels.h); null: none.
-  vtkSmartPointer<vtkPolyData> dimension_labels;
   vtkSmartPointer<vtkPolyData> mesh;  // null: the scene keeps its current mesh layer
   TunnelMap map;                      // for the camera presets
   int stride = 1;                     // point-layer decimation used (sets the point size)

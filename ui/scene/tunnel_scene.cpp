@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <string>
 
+#include "ui/scene/dimension_labels.h"
 #include "ui/scene/scene_colors.h"
 
 namespace tunnelmap::scene {
@@ -217,10 +218,10 @@ void TunnelScene::set_geometry(const SceneGeometry& g) {
   set_input(Layer::Grid, g.grid ? g.grid.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
   grid_labels_->GetMapper()->SetInputDataObject(g.grid_labels ? g.grid_labels.Get()
                                                               : vtkSmartPointer<vtkPolyData>::New().Get());
-  dimension_labels_->GetMapper()->SetInputDataObject(
-      g.dimension_labels ? g.dimension_labels.Get() : vtkSmartPointer<vtkPolyData>::New().Get());
   if (g.mesh) set_mesh(g.mesh);
   map_ = g.map;
+  // Two labels, built here: which ones depends on the view (dimension_labels.h).
+  dimension_labels_->GetMapper()->SetInputDataObject(make_dimension_labels(map_, view_));
   // Decimated point layers draw larger points so surfaces stay closed on screen.
   actors_[idx(Layer::Cloud)]->GetProperty()->SetPointSize(std::max(2, g.stride));
   actors_[idx(Layer::Planes)]->GetProperty()->SetPointSize(g.stride + 1);
@@ -263,6 +264,7 @@ void TunnelScene::refresh_visibility() {
 void TunnelScene::apply_view(ViewPreset view) {
   view_ = view;
   refresh_visibility();
+  dimension_labels_->GetMapper()->SetInputDataObject(make_dimension_labels(map_, view_));
   scene::apply_view(renderer_, view, map_);
 }
 

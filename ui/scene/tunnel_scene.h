@@ -60,6 +60,8 @@ class TunnelScene {
   ViewPreset view() const { return view_; }
 
   const SceneLegend& legend() const { return *legend_; }
+  // The width and height text (Boundary layer); its input holds the labels the view shows.
+  vtkActor2D* dimension_label_actor() const { return dimension_labels_; }
 
   // Measurement: pick_at() picks the surface drawn under display (x, y) (origin bottom-left; the
   // scene must have been rendered) and adds it to the last measurement, or starts a new one
