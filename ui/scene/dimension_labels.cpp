@@ -54,7 +54,8 @@ vtkSmartPointer<vtkPolyData> make_dimension_labels(const TunnelMap& map, ViewPre
     add(along_wall(floor, 0.5) + 0.3 * map.width_m * to_left, text("width", map.width_m, map.width_source));
   }
   const Wall& side = usable(map.wall(WallClass::Left)) ? map.wall(WallClass::Left) : map.wall(WallClass::Right);
-  if (map.has_height() && usable(side) && view != ViewPreset::Top) add(along_wall(side, 0.5), text("height", map.height_m, map.height_source));
+  if (map.has_height() && usable(side) && view != ViewPreset::Top)
+    add(along_wall(side, 0.5), text("height", map.height_m, map.height_source));
   return labels.polydata();
 }
 
