@@ -6,6 +6,8 @@
 
 #include <emmintrin.h>
 
+#include "core/planes/cell_fit_batch.h"
+#include "core/planes/cell_fit_kernels.h"
 #include "core/planes/cell_moments_avx2.h"
 #include "core/planes/cell_moments_tail.h"
 #include "core/util/sse_xyz.h"
@@ -17,18 +19,6 @@ namespace {
 float hsum(__m128 a) {
   const __m128 s = _mm_add_ps(a, _mm_movehl_ps(a, a));
   return _mm_cvtss_f32(_mm_add_ss(s, _mm_shuffle_ps(s, s, 1)));
-}
-
-// Standard error of a fitted normal (radians) from the scatter about the mean and the residual
-// along the normal: sigma / sqrt(L1), the normal tilts most towards the plane's narrower
-// in-plane direction; sigma^2 = L0 / (n - 3), L0 <= L1 <= L2 the scatter's eigenvalues.
-double normal_standard_error(const double scatter[6], double l0, double cnt) {
-  const double* s = scatter;
-  const double t = s[0] + s[3] + s[5];
-  const double minors = s[0] * s[3] - s[1] * s[1] + s[0] * s[5] - s[2] * s[2] + s[3] * s[5] - s[4] * s[4];
-  const double sum12 = t - l0, prod12 = minors - l0 * sum12;
-  const double l1 = 0.5 * (sum12 - std::sqrt(std::max(0.0, sum12 * sum12 - 4 * prod12)));
-  return (cnt > 3 && l1 > 0) ? std::sqrt(l0 / ((cnt - 3) * l1)) : M_PI;
 }
 
 // A valid point of the cell to take moments about: its centre pixel, else the first valid one.
@@ -78,41 +68,6 @@ void cell_moments(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, c
 
 namespace {
 
-// The cell's moments, mean and least-squares plane (normal and mse); planarity comes later.
-void fit_cell(const double m[11], const Eigen::Vector3f& ref_f, int min_valid, CellFit& c) {
-  c.count = static_cast<int>(std::lround(m[0]));
-  c.fitted = c.quiet = c.planar = false;
-  c.normal.setZero();
-  c.mse = 0.0;
-  if (c.count == 0) {
-    c.sum_p.setZero(), c.mean.setZero(), c.sum_z3 = 0.0;
-    std::fill(c.sum_pp, c.sum_pp + 6, 0.0), std::fill(c.scatter, c.scatter + 6, 0.0);
-    return;
-  }
-  const double cnt = c.count;
-  const Eigen::Vector3d ref = ref_f.cast<double>();
-  const Eigen::Vector3d d(m[1] / cnt, m[2] / cnt, m[3] / cnt);  // mean offset from ref
-  c.mean = ref + d;
-  c.sum_p = cnt * c.mean;
-  // About the mean: sum d d^T - n dbar dbar^T; about the origin: that + n mean mean^T.
-  const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-  for (int k = 0; k < 6; ++k) {
-    const int i = ij[k][0], j = ij[k][1];
-    c.scatter[k] = m[4 + k] - cnt * d(i) * d(j);
-    c.sum_pp[k] = c.scatter[k] + cnt * c.mean(i) * c.mean(j);
-  }
-  // sum (rz + dz)^3 expanded.
-  const double rz = ref.z();
-  c.sum_z3 = cnt * rz * rz * rz + 3 * rz * rz * m[3] + 3 * rz * m[9] + m[10];
-  if (c.count < std::max(3, min_valid)) return;
-  Eigen::Vector3d nrm;
-  if (!smallest_eigenvector(c.scatter, nrm)) return;
-  if (nrm.dot(c.mean) > 0) nrm = -nrm;  // face the camera
-  c.mse = std::max(0.0, c.mse_to(nrm, -nrm.dot(c.mean)));  // rounding can dip below 0 on an exact plane
-  c.normal = nrm;
-  c.fitted = true;
-}
-
 // The frame's depth noise as sigma = c z^2 (a structured-light sensor's disparity noise grows
 // with the square of the range): c is the lower quartile of the fitted cells' RMS / z^2. Flat
 // surfaces set it in any scene with some flat surface at some range; edges and clutter only
@@ -154,66 +109,73 @@ constexpr double kMaxBlockF = 64.0;
 constexpr double kNoiseFloor = 0.5e-3;  // m: below any depth sensor's noise, keeps exact planes comparable
 
 void smooth_cell_normals(CellGrid& grid) {
-  // Row sums over 3 cells of each planar cell's count, point and product sums, residual and
-  // bound (13 values: members, n, p, pp, squared distances to its own plane, n * max_mse), then
-  // the column of three row sums: 6 adds per value instead of 9.
-  constexpr int kSums = 13;
-  std::vector<double>& rows = grid.row_sums;
-  rows.assign(grid.cells.size() * kSums, 0.0);
-  for (int cv = 0; cv < grid.rows; ++cv)
-    for (int cu = 0; cu < grid.cols; ++cu) {
-      const CellFit& f = grid.cells[grid.index(cu, cv)];
-      if (!f.planar) continue;
-      const double v[kSums] = {1.0, static_cast<double>(f.count), f.sum_p.x(), f.sum_p.y(), f.sum_p.z(),
-                               f.sum_pp[0], f.sum_pp[1], f.sum_pp[2], f.sum_pp[3], f.sum_pp[4], f.sum_pp[5],
-                               f.mse * f.count, f.max_mse * f.count};
-      for (int nu = std::max(0, cu - 1); nu <= std::min(grid.cols - 1, cu + 1); ++nu) {
-        double* r = rows.data() + static_cast<std::size_t>(grid.index(nu, cv)) * kSums;
-        for (int k = 0; k < kSums; ++k) r[k] += v[k];
-      }
-    }
-  for (int cv = 0; cv < grid.rows; ++cv) {
-    for (int cu = 0; cu < grid.cols; ++cu) {
-      CellFit& cell = grid.cells[grid.index(cu, cv)];
-      cell.block_normal = cell.normal;
-      cell.block_se = cell.normal_se;
-      cell.block_fitted = false;
-      if (!cell.planar) continue;
-      double b[kSums] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-      for (int nv = std::max(0, cv - 1); nv <= std::min(grid.rows - 1, cv + 1); ++nv) {
-        const double* r = rows.data() + static_cast<std::size_t>(grid.index(cu, nv)) * kSums;
-        for (int k = 0; k < kSums; ++k) b[k] += r[k];
-      }
-      if (b[0] < 2) continue;
-      const double cnt = b[1];
-      const Eigen::Vector3d mean(b[2] / cnt, b[3] / cnt, b[4] / cnt);
-      const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
-      double scatter[6];
-      for (int k = 0; k < 6; ++k) scatter[k] = b[5 + k] - cnt * mean(ij[k][0]) * mean(ij[k][1]);
-      Eigen::Vector3d n;
-      if (!smallest_eigenvector(scatter, n)) continue;
-      const double spread = n.x() * (n.x() * scatter[0] + 2 * n.y() * scatter[1] + 2 * n.z() * scatter[2]) +
-                            n.y() * (n.y() * scatter[3] + 2 * n.z() * scatter[4]) + n.z() * n.z() * scatter[5];
-      if (spread > b[12]) continue;  // beyond the members' planarity bounds
-      // One plane must explain the block nearly as well as a plane per cell does: the residual
-      // it adds, per degree of freedom given up, within kMaxBlockF of the cells' own noise
-      // variance (an F test). Real depth noise is correlated within a cell (disparity
-      // terraces), so flat real walls reach F of 10-30; an 8 mm step between exact cells gives
-      // about 1500 (measured on resources/real-frames and cell_fits_test).
-      const double members = b[0], own = b[11];
-      const double noise = std::max(own / std::max(1.0, cnt - 3 * members), kNoiseFloor * kNoiseFloor);
-      if ((spread - own) / (3 * (members - 1)) > kMaxBlockF * noise) continue;  // keep the cell's own
-      if (n.dot(cell.normal) < 0) n = -n;
-      cell.block_normal = n;
-      cell.block_se = normal_standard_error(scatter, std::max(0.0, spread), cnt);
-      cell.block_fitted = true;
-    }
+  // Each planar cell's 13 values (members, n, p, pp, n * its mse, n * its bound; 0 for the
+  // others), summed over 3 cells of a row and then over the column of three row sums, each sum
+  // in raster order of its terms; then the block fits of all cells at once.
+  const std::size_t n = padded_cells(grid.cells.size());
+  std::vector<double>& buf = grid.row_sums;
+  buf.resize((2 * kBlockSums + 3) * n);
+  double* values = buf.data();
+  double* rows = values + kBlockSums * n;
+  double* own_normal = rows + kBlockSums * n;
+  for (std::size_t i = 0; i < grid.cells.size(); ++i) {
+    const CellFit& f = grid.cells[i];
+    const double p = f.planar ? 1.0 : 0.0, cnt = p * f.count;
+    const double v[kBlockSums] = {p, cnt, p * f.sum_p.x(), p * f.sum_p.y(), p * f.sum_p.z(), p * f.sum_pp[0],
+                                  p * f.sum_pp[1], p * f.sum_pp[2], p * f.sum_pp[3], p * f.sum_pp[4],
+                                  p * f.sum_pp[5], p * (f.mse * f.count), p * (f.max_mse * f.count)};
+    for (int k = 0; k < kBlockSums; ++k) values[k * n + i] = v[k];
+    for (int k = 0; k < 3; ++k) own_normal[k * n + i] = f.normal(k);
   }
-  // A cell planar only within the noise bound has too little extent for its own normal (at 3 m
-  // an 8-pixel cell spans 4 cm against 1 cm of noise, and its fitted normal is off by 70-80
-  // degrees on the simulated end wall): it stays planar only with a block plane's normal.
-  for (CellFit& cell : grid.cells)
+  std::vector<double>& blocks = grid.block_sums;
+  blocks.resize(static_cast<std::size_t>(kBlockFields) * n);
+  for (std::size_t i = grid.cells.size(); i < n; ++i) {  // the padding
+    for (int k = 0; k < kBlockSums; ++k) blocks[k * n + i] = 0.0;
+    for (int k = 0; k < 3; ++k) own_normal[k * n + i] = 0.0;
+  }
+  const int cols = grid.cols;
+  for (int k = 0; k < kBlockSums; ++k)
+    for (int cv = 0; cv < grid.rows; ++cv) {
+      const double* v = values + k * n + static_cast<std::size_t>(cv) * cols;
+      double* r = rows + k * n + static_cast<std::size_t>(cv) * cols;
+      for (int cu = 0; cu < cols; ++cu) {
+        double sum = cu > 0 ? v[cu - 1] + v[cu] : v[cu];
+        if (cu + 1 < cols) sum += v[cu + 1];
+        r[cu] = sum;
+      }
+    }
+  for (int k = 0; k < kBlockSums; ++k)
+    for (int cv = 0; cv < grid.rows; ++cv) {
+      const double* r = rows + k * n + static_cast<std::size_t>(cv) * cols;
+      double* b = blocks.data() + k * n + static_cast<std::size_t>(cv) * cols;
+      const bool up = cv > 0, down = cv + 1 < grid.rows;
+      for (int cu = 0; cu < cols; ++cu) {
+        double sum = up ? r[cu - cols] + r[cu] : r[cu];
+        if (down) sum += r[cu + cols];
+        b[cu] = sum;
+      }
+    }
+  // One plane must explain the block nearly as well as a plane per cell does: the residual it
+  // adds, per degree of freedom given up, within kMaxBlockF of the cells' own noise variance
+  // (an F test). Real depth noise is correlated within a cell (disparity terraces), so flat
+  // real walls reach F of 10-30; an 8 mm step between exact cells gives about 1500 (measured
+  // on resources/real-frames and cell_fits_test).
+  fit_block_planes(blocks.data(), own_normal, n, kMaxBlockF, kNoiseFloor * kNoiseFloor);
+  const double* b = blocks.data();
+  for (std::size_t i = 0; i < grid.cells.size(); ++i) {
+    CellFit& cell = grid.cells[i];
+    cell.block_normal = cell.normal;
+    cell.block_se = cell.normal_se;
+    cell.block_fitted = cell.planar && b[kBlockFitted * n + i] > 0;
+    if (cell.block_fitted) {
+      cell.block_normal = Eigen::Vector3d(b[kBlockNormalX * n + i], b[kBlockNormalY * n + i], b[kBlockNormalZ * n + i]);
+      cell.block_se = b[kBlockSe * n + i];
+    }
+    // A cell planar only within the noise bound has too little extent for its own normal (at
+    // 3 m an 8-pixel cell spans 4 cm against 1 cm of noise, and its fitted normal is off by
+    // 70-80 degrees on the simulated end wall): it stays planar only with a block normal.
     if (cell.planar && !cell.quiet && !cell.block_fitted) cell.planar = false, cell.normal_se = M_PI;
+  }
 }
 
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
@@ -222,32 +184,52 @@ void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, 
   grid.cell_px = c;
   grid.cols = (cloud.width + c - 1) / c;
   grid.rows = (cloud.height + c - 1) / c;
-  grid.cells.resize(static_cast<std::size_t>(grid.cols) * grid.rows);
+  const std::size_t n = static_cast<std::size_t>(grid.cols) * grid.rows;
+  grid.cells.resize(n);
+  const std::size_t stride = padded_cells(n);
+  grid.fit_arrays.resize(static_cast<std::size_t>(kCellFields) * stride);
+  double* a = grid.fit_arrays.data();
+  for (int k = 0; k < kMeanX; ++k) std::fill(a + k * stride + n, a + (k + 1) * stride, 0.0);  // the padding
   double m[11];
   for (int cv = 0; cv < grid.rows; ++cv) {
     const int v0 = cv * c, v1 = std::min(cloud.height, v0 + c);
     for (int cu = 0; cu < grid.cols; ++cu) {
       const int u0 = cu * c, u1 = std::min(cloud.width, u0 + c);
-      CellFit& cell = grid.cells[grid.index(cu, cv)];
-      Eigen::Vector3f ref;
-      if (!reference_point(cloud, u0, v0, u1, v1, ref)) {
-        std::fill(m, m + 11, 0.0);
-        fit_cell(m, Eigen::Vector3f::Zero(), min_valid, cell);
-        continue;
-      }
-      cell_moments(cloud, u0, v0, u1, v1, ref, m);
-      fit_cell(m, ref, min_valid, cell);
+      const std::size_t i = static_cast<std::size_t>(grid.index(cu, cv));
+      Eigen::Vector3f ref = Eigen::Vector3f::Zero();
+      if (reference_point(cloud, u0, v0, u1, v1, ref)) cell_moments(cloud, u0, v0, u1, v1, ref, m);
+      else std::fill(m, m + 11, 0.0);
+      for (int k = 0; k < 11; ++k) a[(kMoment0 + k) * stride + i] = m[k];
+      for (int k = 0; k < 3; ++k) a[(kRefX + k) * stride + i] = ref(k);
     }
+  }
+  fit_cell_planes(a, stride, std::max(3, min_valid));
+  const int ij[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
+  for (std::size_t i = 0; i < n; ++i) {
+    CellFit& cell = grid.cells[i];
+    const double cnt = a[kMoment0 * stride + i];
+    cell.count = static_cast<int>(std::lround(cnt));
+    cell.mean = Eigen::Vector3d(a[kMeanX * stride + i], a[kMeanY * stride + i], a[kMeanZ * stride + i]);
+    cell.sum_p = cnt * cell.mean;
+    for (int k = 0; k < 6; ++k) {
+      cell.scatter[k] = a[(kScatter0 + k) * stride + i];
+      cell.sum_pp[k] = cell.scatter[k] + cnt * cell.mean(ij[k][0]) * cell.mean(ij[k][1]);
+    }
+    cell.sum_z3 = a[kSumZ3 * stride + i];
+    cell.fitted = a[kFitted * stride + i] > 0;
+    cell.normal = Eigen::Vector3d(a[kNormalX * stride + i], a[kNormalY * stride + i], a[kNormalZ * stride + i]);
+    cell.mse = a[kMse * stride + i];
   }
   const double max_mse = max_rms_m * max_rms_m;
   grid.noise_per_m2 = noise_multiple > 0 ? noise_coefficient(grid, grid.ratios) : 0.0;
-  for (CellFit& cell : grid.cells) {
+  for (std::size_t i = 0; i < n; ++i) {
+    CellFit& cell = grid.cells[i];
     const double noise = noise_multiple * grid.noise_per_m2 * cell.mean.z() * cell.mean.z();
     cell.max_mse = std::max(max_mse, noise * noise);
     cell.quiet = cell.fitted && cell.mse <= max_mse;
     cell.planar = cell.fitted && cell.mse <= cell.max_mse;
     // Only the growing reads it, and only of planar cells.
-    cell.normal_se = cell.planar ? normal_standard_error(cell.scatter, cell.mse * cell.count, cell.count) : M_PI;
+    cell.normal_se = cell.planar ? a[kNormalSe * stride + i] : M_PI;
   }
 }
 

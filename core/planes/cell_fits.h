@@ -44,8 +44,10 @@ struct CellGrid {
   int cell_px = 0;  // side of a cell; cells on the right and bottom edge may be smaller
   int cols = 0, rows = 0;
   std::vector<CellFit> cells;  // rows * cols, row-major
-  std::vector<double> row_sums;  // smooth_cell_normals' buffer, kept to avoid allocating per frame
-  std::vector<double> ratios;    // compute_cell_fits' buffer
+  // Buffers kept to avoid allocating per frame: compute_cell_fits' per-quantity arrays over the
+  // cells (cell_fit_kernels.h) and ratios, smooth_cell_normals' values and sums.
+  std::vector<double> fit_arrays, ratios;
+  std::vector<double> row_sums, block_sums;
   double noise_per_m2 = 0.0;     // the frame's depth noise, sigma / z^2 (1/m); 0 when not estimated
 
   int index(int cu, int cv) const { return cv * cols + cu; }
