@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/normals/cloud_builder_avx2.h"
 #include "core/util/sse_xyz.h"
 
 namespace tunnelmap {
@@ -35,11 +36,12 @@ void build_cloud(const DepthFrame& frame, const CloudOptions& options, Organized
   for (int v = 0; v < h; ++v) ky[v] = static_cast<float>((v - frame.intrinsics.cy) / frame.intrinsics.fy);
   const __m128 units4 = _mm_set1_ps(units), zmin4 = _mm_set1_ps(zmin), zmax4 = _mm_set1_ps(zmax);
   const __m128 nan4 = _mm_set1_ps(nan), zero4 = _mm_setzero_ps();
+  const bool avx2 = cloud_builder_avx2_available();
   for (int v = 0; v < h; ++v) {
     const float* d = frame.depth.data() + static_cast<std::size_t>(v) * w;
     float* p = cloud.points.data()->data() + 3 * static_cast<std::size_t>(v) * w;
     const __m128 ky4 = _mm_set1_ps(ky[v]);
-    int u = 0;
+    int u = avx2 ? build_cloud_row_avx2(d, kx.data(), ky[v], w, units, zmin, zmax, p) : 0;
     // Four pixels at a time, without a branch on the (often scattered) dropouts. The range
     // test also rejects 0, NaN and inf (ordered comparisons with NaN are false).
     for (; u + 4 <= w; u += 4) {
