@@ -208,7 +208,7 @@ void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, 
   for (std::size_t i = 0; i < n; ++i) {
     CellFit& cell = grid.cells[i];
     const double cnt = a[kMoment0 * stride + i];
-    cell.count = static_cast<int>(std::lround(cnt));
+    cell.count = static_cast<int>(cnt + 0.5);  // an exact count in a float sum
     cell.mean = Eigen::Vector3d(a[kMeanX * stride + i], a[kMeanY * stride + i], a[kMeanZ * stride + i]);
     cell.sum_p = cnt * cell.mean;
     for (int k = 0; k < 6; ++k) {
