@@ -203,11 +203,7 @@ void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps
         PixelTally& t = s.tallies[own - 1];
         t.count += f.count, t.sum_p += f.sum_p, t.sum_z3 += f.sum_z3;
         t.include_box(u0, v0, u1 - 1, v1 - 1);
-        if (f.count == (u1 - u0) * (v1 - v0)) {  // every pixel valid: no need to read the points
-          for (int v = v0; v < v1; ++v) std::fill_n(out.labels.data() + cloud.index(u0, v), u1 - u0, own);
-        } else {
-          label_valid_pixels(cloud, u0, v0, u1, v1, own, out.labels.data());
-        }
+        label_valid_pixels(cloud, u0, v0, u1, v1, own, out.labels.data());
         continue;
       }
       assign_to_nearest_plane(cloud, u0, v0, u1, v1, s.assign_planes.data(), cand, ncand, epsf, out.labels.data(),
