@@ -36,7 +36,8 @@ inline constexpr ParameterKey<int> grid_step{
 inline constexpr ParameterKey<bool> edge_on_pass{
     "grow.edge_on_pass", "", true, 0, 1, 1, Stage::Planes, "Edge-on pass",
     "With grid step > 1: 1 grows every pixel from the unlabelled pixels where grid neighbours lie beyond "
-    "the candidate distance (surfaces seen nearly edge-on, e.g. wall edge bands down the tunnel); 0: off"};
+    "the candidate distance (surfaces seen nearly edge-on, e.g. wall edge bands down the tunnel); with "
+    "cells: 1 grows single pixels from the unlabelled cells where a 5x5 window is seen edge-on; 0: off"};
 inline constexpr ParameterKey<int> cell_px{
     "grow.cell_px", "px", 0, 0, 32, 1, Stage::Planes, "Growing cell size",
     "0: grow on the pixel grid (grid step); k >= 4: grow over k x k pixel cells joined by the eq. 2 "

@@ -5,6 +5,7 @@
 
 #include "core/planes/grazing_growth.h"
 #include "core/planes/plane_contour.h"
+#include "core/planes/residual_growth.h"
 #include "core/planes/plane_model.h"
 #include "core/planes/plane_refinement.h"
 #include "core/planes/plane_scratch.h"
@@ -67,6 +68,12 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
   StageTimer timer(out.timings_ms, "planes");
   if (options.cell_px > 0) {
     extract_planes_by_cells(cloud, options, out, scratch.cells, scratch.contour_pool);
+    const std::size_t cell_planes = out.planes.size();
+    if (options.edge_on_pass) {
+      StageTimer edge_timer(out.timings_ms, "edge_on");
+      grow_residual_slivers(cloud, options, scratch.cells.grid, scratch.cells.cell_labels, out, scratch.residual,
+                            scratch.contour_pool);
+    }
     if (options.compute_contours) {
       // Traced on every (cell / 2)-th pixel and row: half a cell is the resolution the cells
       // already hold the outline to in their interior. At 8 px cells this is 3x cheaper than
@@ -82,7 +89,12 @@ void extract_planes(const OrganizedCloud& cloud, const GrowOptions& options, Pla
       for (int v = 0; v < hh; ++v)
         for (int u = 0; u < hw; ++u)
           half_labels[static_cast<std::size_t>(v) * hw + u] = out.labels[cloud.index(u * kStep, v * kStep)];
-      for (PlaneSegment& plane : out.planes) {
+      for (std::size_t i = 0; i < out.planes.size(); ++i) {
+        PlaneSegment& plane = out.planes[i];
+        if (i >= cell_planes) {  // a sliver of the residual pass: a few pixels wide
+          compute_contour(out.labels, cloud.width, cloud.intrinsics, plane, scratch.contour);
+          continue;
+        }
         const int u0 = plane.bbox_u0, v0 = plane.bbox_v0, u1 = plane.bbox_u1, v1 = plane.bbox_v1;
         plane.bbox_u0 = u0 / kStep, plane.bbox_v0 = v0 / kStep;
         plane.bbox_u1 = std::min(hw - 1, (u1 + kStep - 1) / kStep);

@@ -12,6 +12,7 @@
 #include "core/planes/plane_refinement.h"
 #include "core/planes/plane_slots.h"
 #include "core/planes/region_grower.h"
+#include "core/planes/residual_growth.h"
 
 namespace tunnelmap {
 
@@ -23,6 +24,7 @@ struct PlaneScratch {
   std::vector<std::uint8_t> edge_on_states;
   RefinementScratch refinement;
   CellGrowingScratch cells;     // the cell-based growing order (grow.cell_px > 0)
+  ResidualGrowthScratch residual;  // its pass over the pixels no cell plane took
   ContourScratch contour;
   ContourBufferPool contour_pool;  // contour buffers of removed plane slots, for the next new ones
 };
