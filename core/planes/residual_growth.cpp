@@ -21,7 +21,8 @@ constexpr std::size_t kSettledModel = 64;
 constexpr int kWindow = 2;            // seed window: (2 kWindow + 1)^2 pixels
 constexpr int kMinWindowPoints = 12;  // free pixels of it for a fit
 constexpr int kSeedStride = 2;        // seeds tried on every second pixel and row
-constexpr double kMinIncidenceDeg = 75.0;
+constexpr double kMinIncidenceDeg = 75.0;      // a seed window's plane at least this far from facing the camera
+constexpr double kMinCellIncidenceDeg = 60.0;  // and its cell's points as a whole
 constexpr double kQuickIncidenceDeg = 60.0;
 constexpr double kMaxRegionIncidenceDeg = 70.0;  // a settled region facing the camera more than this is dropped
 constexpr double kMaxNoiseM = 0.004;
@@ -106,6 +107,7 @@ int grow_residual_slivers(const OrganizedCloud& cloud, const GrowOptions& option
   // plane at grazing incidence is a step of the disparity quantisation, not a surface.
   const double max_noise = std::min(0.5 * eps, kMaxNoiseM);
   const double cos_seed = std::cos(kMinIncidenceDeg * M_PI / 180.0);
+  const double cos_cell = std::cos(kMinCellIncidenceDeg * M_PI / 180.0);
   const double cos_region = std::cos(kMaxRegionIncidenceDeg * M_PI / 180.0);
   const float cos_quick = static_cast<float>(std::cos(kQuickIncidenceDeg * M_PI / 180.0));
   const int step_u[16] = {1, -1, 0, 0, 1, 1, -1, -1, 2, -2, 0, 0, 2, 2, -2, -2};
@@ -119,7 +121,10 @@ int grow_residual_slivers(const OrganizedCloud& cloud, const GrowOptions& option
   // Seeds lie in the cells no plane took (a sliver's cells fit no plane); the pixels they grow
   // over may lie in any cell.
   for (int ci = 0; ci < static_cast<int>(cell_labels.size()); ++ci) {
-    if (cell_labels[ci] != 0 || grid.cells[ci].count < kMinWindowPoints) continue;
+    const CellFit& cell = grid.cells[ci];
+    if (cell_labels[ci] != 0 || cell.count < kMinWindowPoints) continue;
+    // A cell whose points as a whole face the camera holds no sliver seen edge-on.
+    if (cell.fitted && std::abs(cell.normal.dot(cell.mean)) > cos_cell * cell.mean.norm()) continue;
     const int cu = ci % grid.cols, cv = ci / grid.cols;
     const int sv0 = std::max(kWindow, cv * cell_px), sv1 = std::min(h - kWindow, (cv + 1) * cell_px);
     const int su0 = std::max(kWindow, cu * cell_px), su1 = std::min(w - kWindow, (cu + 1) * cell_px);

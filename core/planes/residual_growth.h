@@ -3,11 +3,13 @@
 // band down the tunnel is a sliver a few pixels wide: every cell it crosses also holds the wall
 // or the floor, fits no plane, and the band stays unlabelled (on the simulated lab frames, over
 // 90 % of such a band's pixels). This pass grows single pixels among the pixels no plane took:
-// seeded where a 5x5 window of them fits a plane within epsilon/2 that the cells cannot hold
-// (grid_cannot_connect at half a cell), joined by eq. 2's distance test to the region's
-// least-squares plane and the candidate distance to the pixel it is reached from. The cell
-// order has no per-pixel normals: the seed window's fit and the region's plane stand in for
-// eq. 2's normal test (the band's neighbours are already taken by their own planes).
+// seeded in unlabelled cells where a 5x5 window of them fits a plane within epsilon/2 seen at
+// 75 degrees of incidence or more, that the cells cannot hold (grid_cannot_connect at half a
+// cell); joined by eq. 2's distance test to the region's least-squares plane and the candidate
+// distance to the pixel it is reached from (the 8 neighbours, and the pixel beyond one without
+// a point: such slivers have dropouts). The cell order has no per-pixel normals: the seed
+// window's fit stands in for eq. 2's normal test, and a region whose plane turns out to face
+// the camera (under 70 degrees of incidence) is dropped.
 #include <cstdint>
 #include <utility>
 #include <vector>
