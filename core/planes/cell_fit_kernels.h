@@ -158,9 +158,12 @@ TM_INLINE void fit_block_planes_kernel(double* b, const double* own_normal, std:
     const V c = cnt > zero ? cnt : one;
     const V mean[3] = {L::load(f(kSumX, i)) / c, L::load(f(kSumY, i)) / c, L::load(f(kSumZ, i)) / c};
     V s[6];
-    s[0] = L::load(f(kSumPP0, i)) - cnt * mean[0] * mean[0], s[1] = L::load(f(kSumPP0 + 1, i)) - cnt * mean[0] * mean[1];
-    s[2] = L::load(f(kSumPP0 + 2, i)) - cnt * mean[0] * mean[2], s[3] = L::load(f(kSumPP0 + 3, i)) - cnt * mean[1] * mean[1];
-    s[4] = L::load(f(kSumPP0 + 4, i)) - cnt * mean[1] * mean[2], s[5] = L::load(f(kSumPP0 + 5, i)) - cnt * mean[2] * mean[2];
+    s[0] = L::load(f(kSumPP0, i)) - cnt * mean[0] * mean[0];
+    s[1] = L::load(f(kSumPP0 + 1, i)) - cnt * mean[0] * mean[1];
+    s[2] = L::load(f(kSumPP0 + 2, i)) - cnt * mean[0] * mean[2];
+    s[3] = L::load(f(kSumPP0 + 3, i)) - cnt * mean[1] * mean[1];
+    s[4] = L::load(f(kSumPP0 + 4, i)) - cnt * mean[1] * mean[2];
+    s[5] = L::load(f(kSumPP0 + 5, i)) - cnt * mean[2] * mean[2];
     V v[3];
     const auto ok = eigen_step(s, v);
     const V spread = quadratic_form(s, v);

@@ -177,7 +177,10 @@ int grow_residual_slivers(const OrganizedCloud& cloud, const GrowOptions& option
           if (!OrganizedCloud::valid(pr) || (pr - pq).squaredNorm() > cand2) continue;
           const float off = nf.dot(pr) + df;
           if (off * off > eps2f) {
-            if (queue.size() >= kSettledModel) rejected.push_back({static_cast<std::int32_t>(r), labels[r]}), labels[r] = kRejected;
+            if (queue.size() >= kSettledModel) {
+              rejected.push_back({static_cast<std::int32_t>(r), labels[r]});
+              labels[r] = kRejected;
+            }
             continue;
           }
           if (labels[r] == 0) touched.push_back(static_cast<std::int32_t>(r));
