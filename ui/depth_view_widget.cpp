@@ -82,7 +82,7 @@ void DepthViewWidget::paintEvent(QPaintEvent*) {
   p.setRenderHint(QPainter::Antialiasing, true);
   p.setPen(QPen(Qt::white, 2));
   p.setBrush(Qt::white);
-  for (const QPoint& uv : picked_pixels_) p.drawEllipse(widget_point(uv.x(), uv.y()), 3.5, 3.5);
+  for (const QPoint& uv : picked_pixels_) p.drawEllipse(QPointF(widget_point(uv.x(), uv.y())), 3.5, 3.5);
   p.setFont(QFont(font().family(), 10, QFont::Bold));
   // Measurement k's picks are picked_pixels_[2k] and [2k + 1].
   for (std::size_t k = 0; k < measurements_.size() && 2 * k + 1 < picked_pixels_.size(); ++k) {

@@ -46,17 +46,16 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
   __m128i id[M];
   // Per candidate: float sums over the cell (a few hundred points at most: float keeps them to
   // well under a micrometre), and the columns and rows it won.
-  __m128 sn[M], sx[M], sy[M], sz[M], sz3[M];
+  __m128 sx[M], sy[M], sz[M], sz3[M];
   ScalarSums tail[M];
   WonBox box[M];
   for (int k = 0; k < ncand; ++k) {
     const Eigen::Vector4f& a = planes[cand[k] - 1];
     nx[k] = _mm_set1_ps(a.x()), ny[k] = _mm_set1_ps(a.y()), nz[k] = _mm_set1_ps(a.z()), nd[k] = _mm_set1_ps(a.w());
     id[k] = _mm_set1_epi32(cand[k]);
-    sn[k] = sx[k] = sy[k] = sz[k] = sz3[k] = _mm_setzero_ps();
+    sx[k] = sy[k] = sz[k] = sz3[k] = _mm_setzero_ps();
   }
   const __m128 eps4 = _mm_set1_ps(eps), abs_mask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-  const __m128 one = _mm_set1_ps(1.0f);
   for (int v = v0; v < v1; ++v) {
     const float* p = cloud.points[cloud.index(0, v)].data();
     std::int32_t* l = labels + cloud.index(0, v);
@@ -81,7 +80,6 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
       for (int k = 0; k < ncand; ++k) {
         const __m128 won = _mm_castsi128_ps(_mm_cmpeq_epi32(best, id[k]));
         row_bits[k] |= static_cast<std::uint32_t>(_mm_movemask_ps(won)) << (u - u0);
-        sn[k] = _mm_add_ps(sn[k], _mm_and_ps(won, one));
         sx[k] = _mm_add_ps(sx[k], _mm_and_ps(won, x)), sy[k] = _mm_add_ps(sy[k], _mm_and_ps(won, y));
         sz[k] = _mm_add_ps(sz[k], _mm_and_ps(won, z)), sz3[k] = _mm_add_ps(sz3[k], _mm_and_ps(won, z3));
       }
@@ -89,11 +87,11 @@ void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, co
     assign_row_tail(p, u, u1, u0, planes, cand, ncand, eps, l, row_bits, tail);
     for (int k = 0; k < ncand; ++k) box[k].add_row(row_bits[k], v);
   }
-  for (int k = 0; k < ncand; ++k)
-    add_to_tally(tallies[cand[k] - 1],
-                 {horizontal_sum(sn[k]), horizontal_sum(sx[k]), horizontal_sum(sy[k]), horizontal_sum(sz[k]),
-                  horizontal_sum(sz3[k])},
-                 tail[k], u0, box[k]);
+  for (int k = 0; k < ncand; ++k) {
+    const float sums[4] = {horizontal_sum(sx[k]), horizontal_sum(sy[k]), horizontal_sum(sz[k]),
+                           horizontal_sum(sz3[k])};
+    add_to_tally(tallies[cand[k] - 1], sums, tail[k], u0, box[k]);
+  }
 }
 
 }  // namespace

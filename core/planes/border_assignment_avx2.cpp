@@ -23,10 +23,11 @@ namespace {
 constexpr int kMaxCandidates = 9;
 constexpr int kAnyCount = 0;
 
-TM_AVX2 double hsum8(__m256 v) {
-  const __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
-  const __m128 t = _mm_add_ps(s, _mm_movehl_ps(s, s));
-  return _mm_cvtss_f32(_mm_add_ss(t, _mm_shuffle_ps(t, t, 1)));
+// The lane sums of v[0..7] as one vector (lane k = the sum of v[k]), stored to out[0..7].
+TM_AVX2 void lane_sums8(const __m256* v, float* out) {
+  const __m256 a = _mm256_hadd_ps(_mm256_hadd_ps(v[0], v[1]), _mm256_hadd_ps(v[2], v[3]));
+  const __m256 b = _mm256_hadd_ps(_mm256_hadd_ps(v[4], v[5]), _mm256_hadd_ps(v[6], v[7]));
+  _mm256_storeu_ps(out, _mm256_add_ps(_mm256_permute2f128_ps(a, b, 0x20), _mm256_permute2f128_ps(a, b, 0x31)));
 }
 
 // The kernel for `N` candidates (compile-time N keeps the sums in registers; kAnyCount reads
@@ -41,7 +42,8 @@ TM_AVX2 void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, in
   constexpr int M = N == kAnyCount ? kMaxCandidates : N;
   __m256 nx[M], ny[M], nz[M], nd[M];
   __m256i id[M];
-  __m256 sn[M], sx[M], sy[M], sz[M], sz3[M];
+  // Per candidate x, y, z, z^3 (padded to whole groups of 8 for the reduction).
+  __m256 sums[4 * M + 4];
   ScalarSums tail[M];
   WonBox box[M];
   for (int k = 0; k < ncand; ++k) {
@@ -49,10 +51,9 @@ TM_AVX2 void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, in
     nx[k] = _mm256_set1_ps(a.x()), ny[k] = _mm256_set1_ps(a.y()), nz[k] = _mm256_set1_ps(a.z());
     nd[k] = _mm256_set1_ps(a.w());
     id[k] = _mm256_set1_epi32(cand[k]);
-    sn[k] = sx[k] = sy[k] = sz[k] = sz3[k] = _mm256_setzero_ps();
   }
+  for (int k = 0; k < 4 * ncand + 4; ++k) sums[k] = _mm256_setzero_ps();
   const __m256 eps8 = _mm256_set1_ps(eps), abs_mask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff));
-  const __m256 one = _mm256_set1_ps(1.0f);
   const __m256i pixel_order = xyz8_pixel_order();
   for (int v = v0; v < v1; ++v) {
     const float* p = cloud.points[cloud.index(0, v)].data();
@@ -80,17 +81,17 @@ TM_AVX2 void assign_cell(const OrganizedCloud& cloud, int u0, int v0, int u1, in
         const __m256 won = _mm256_castsi256_ps(_mm256_cmpeq_epi32(best, id[k]));
         const __m256 won_px = _mm256_castsi256_ps(_mm256_cmpeq_epi32(in_pixel_order, id[k]));
         row_bits[k] |= static_cast<std::uint32_t>(_mm256_movemask_ps(won_px)) << (u - u0);
-        sn[k] = _mm256_add_ps(sn[k], _mm256_and_ps(won, one));
-        sx[k] = _mm256_add_ps(sx[k], _mm256_and_ps(won, x)), sy[k] = _mm256_add_ps(sy[k], _mm256_and_ps(won, y));
-        sz[k] = _mm256_add_ps(sz[k], _mm256_and_ps(won, z)), sz3[k] = _mm256_add_ps(sz3[k], _mm256_and_ps(won, z3));
+        __m256* sk = sums + 4 * k;
+        sk[0] = _mm256_add_ps(sk[0], _mm256_and_ps(won, x)), sk[1] = _mm256_add_ps(sk[1], _mm256_and_ps(won, y));
+        sk[2] = _mm256_add_ps(sk[2], _mm256_and_ps(won, z)), sk[3] = _mm256_add_ps(sk[3], _mm256_and_ps(won, z3));
       }
     }
     assign_row_tail(p, u, u1, u0, planes, cand, ncand, eps, l, row_bits, tail);
     for (int k = 0; k < ncand; ++k) box[k].add_row(row_bits[k], v);
   }
-  for (int k = 0; k < ncand; ++k)
-    add_to_tally(tallies[cand[k] - 1], {hsum8(sn[k]), hsum8(sx[k]), hsum8(sy[k]), hsum8(sz[k]), hsum8(sz3[k])},
-                 tail[k], u0, box[k]);
+  float reduced[4 * M + 8];
+  for (int g = 0; g < 4 * ncand; g += 8) lane_sums8(sums + g, reduced + g);
+  for (int k = 0; k < ncand; ++k) add_to_tally(tallies[cand[k] - 1], reduced + 4 * k, tail[k], u0, box[k]);
 }
 
 }  // namespace

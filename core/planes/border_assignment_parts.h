@@ -23,19 +23,23 @@ inline int nearest_candidate(const Eigen::Vector4f* planes, const std::int32_t* 
   return best;
 }
 
-// Sums of the pixels a candidate won by the scalar step: count, x, y, z, z^3.
+// Sums of the pixels a candidate won by the scalar step: x, y, z, z^3 (the count is the
+// popcount of the columns won, WonBox).
 struct ScalarSums {
-  float s[5] = {0, 0, 0, 0, 0};
-  void add(float x, float y, float z) { s[0] += 1.0f, s[1] += x, s[2] += y, s[3] += z, s[4] += z * z * z; }
+  float s[4] = {0, 0, 0, 0};
+  void add(float x, float y, float z) { s[0] += x, s[1] += y, s[2] += z, s[3] += z * z * z; }
 };
 
-// The columns (bits from the cell's first column, at most 32) and rows a candidate won.
+// The columns (bits from the cell's first column, at most 32) and rows a candidate won, and
+// how many pixels.
 struct WonBox {
   std::uint32_t cols = 0;
   int row0 = -1, row1 = -1;
+  int count = 0;
   void add_row(std::uint32_t bits, int v) {
     if (bits == 0) return;
     cols |= bits;
+    count += __builtin_popcount(bits);
     if (row0 < 0) row0 = v;
     row1 = v;
   }
@@ -56,16 +60,15 @@ inline void assign_row_tail(const float* row, int u, int u1, int u0, const Eigen
   }
 }
 
-// Adds what a candidate won in the cell starting at column u0 to its plane's tally: the vector
-// step's sums (count, x, y, z, z^3) and the scalar step's.
-inline void add_to_tally(PixelTally& t, const double (&vector_sums)[5], const ScalarSums& tail, int u0,
-                         const WonBox& b) {
+// Adds what a candidate won in the cell starting at column u0 to its plane's tally: the pixels,
+// the vector step's sums (x, y, z, z^3) and the scalar step's.
+inline void add_to_tally(PixelTally& t, const float* vector_sums, const ScalarSums& tail, int u0, const WonBox& b) {
   if (b.cols == 0) return;
-  const double* v = vector_sums;
+  const float* v = vector_sums;
   const float* s = tail.s;
-  t.count += std::lround(v[0] + s[0]);
-  t.sum_p += Eigen::Vector3d(v[1] + s[1], v[2] + s[2], v[3] + s[3]);
-  t.sum_z3 += v[4] + s[4];
+  t.count += b.count;
+  t.sum_p += Eigen::Vector3d(double(v[0]) + s[0], double(v[1]) + s[1], double(v[2]) + s[2]);
+  t.sum_z3 += double(v[3]) + s[3];
   t.include_box(u0 + __builtin_ctz(b.cols), b.row0, u0 + 31 - __builtin_clz(b.cols), b.row1);
 }
 

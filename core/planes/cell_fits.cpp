@@ -209,11 +209,15 @@ void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, 
     CellFit& cell = grid.cells[i];
     const double cnt = a[kMoment0 * stride + i];
     cell.count = static_cast<int>(cnt + 0.5);  // an exact count in a float sum
-    cell.mean = Eigen::Vector3d(a[kMeanX * stride + i], a[kMeanY * stride + i], a[kMeanZ * stride + i]);
-    cell.sum_p = cnt * cell.mean;
+    // From locals: reading back the fields just stored stalls store forwarding (perf: a fifth
+    // of this loop).
+    const Eigen::Vector3d mean(a[kMeanX * stride + i], a[kMeanY * stride + i], a[kMeanZ * stride + i]);
+    cell.mean = mean;
+    cell.sum_p = cnt * mean;
     for (int k = 0; k < 6; ++k) {
-      cell.scatter[k] = a[(kScatter0 + k) * stride + i];
-      cell.sum_pp[k] = cell.scatter[k] + cnt * cell.mean(ij[k][0]) * cell.mean(ij[k][1]);
+      const double scatter = a[(kScatter0 + k) * stride + i];
+      cell.scatter[k] = scatter;
+      cell.sum_pp[k] = scatter + cnt * mean(ij[k][0]) * mean(ij[k][1]);
     }
     cell.sum_z3 = a[kSumZ3 * stride + i];
     cell.fitted = a[kFitted * stride + i] > 0;

@@ -20,10 +20,13 @@ namespace {
 
 #define TM_AVX2 __attribute__((target("avx2")))
 
-TM_AVX2 double hsum8(__m256 v) {
-  const __m128 s = _mm_add_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
-  const __m128 t = _mm_add_ps(s, _mm_movehl_ps(s, s));
-  return _mm_cvtss_f32(_mm_add_ss(t, _mm_shuffle_ps(t, t, 1)));
+// The lane sums of v[0..7] as one vector (lane k = the sum of v[k]): a cell's 11 sums in 20
+// instructions instead of 90 one sum at a time (perf: the reductions were a third of the
+// kernel).
+TM_AVX2 __m256 lane_sums8(const __m256 (&v)[8]) {
+  const __m256 a = _mm256_hadd_ps(_mm256_hadd_ps(v[0], v[1]), _mm256_hadd_ps(v[2], v[3]));
+  const __m256 b = _mm256_hadd_ps(_mm256_hadd_ps(v[4], v[5]), _mm256_hadd_ps(v[6], v[7]));
+  return _mm256_add_ps(_mm256_permute2f128_ps(a, b, 0x20), _mm256_permute2f128_ps(a, b, 0x31));
 }
 
 }  // namespace
@@ -54,8 +57,11 @@ TM_AVX2 void cell_moments_avx2(const OrganizedCloud& cloud, int u0, int v0, int 
     }
     add_tail_moments(row, u, u1, ref, tail);
   }
-  const __m256 all[11] = {n, sx, sy, sz, sxx, sxy, sxz, syy, syz, szz, sz3};
-  for (int k = 0; k < 11; ++k) m[k] = hsum8(all[k]) + tail[k];
+  const __m256 zero = _mm256_setzero_ps();
+  alignas(32) float sums[16];
+  _mm256_store_ps(sums, lane_sums8({n, sx, sy, sz, sxx, sxy, sxz, syy}));
+  _mm256_store_ps(sums + 8, lane_sums8({syz, szz, sz3, zero, zero, zero, zero, zero}));
+  for (int k = 0; k < 11; ++k) m[k] = static_cast<double>(sums[k]) + tail[k];
 }
 
 }  // namespace tunnelmap

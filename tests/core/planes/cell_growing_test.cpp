@@ -201,7 +201,9 @@ TEST(CellFits, NoiseBoundFollowsTheRangeSquared) {
   int far = 0, far_planar = 0;
   for (const CellFit& f : grid.cells) {
     EXPECT_TRUE(f.fitted);
-    if (f.mean.z() < 1.5) EXPECT_TRUE(f.quiet);
+    if (f.mean.z() < 1.5) {
+      EXPECT_TRUE(f.quiet);
+    }
     if (f.mean.z() > 3.0) ++far, far_planar += f.planar && !f.quiet;
   }
   EXPECT_EQ(far_planar, far);
