@@ -18,6 +18,11 @@ constexpr std::int32_t kTried = -1, kInRegion = -2, kRejected = -3, kBlocked = -
 // Once the region's model is settled it moves too little for a pixel that failed its tests to
 // pass from the next member: the pixel is not retested for this region (as RegionGrower).
 constexpr std::size_t kSettledModel = 64;
+// A region at least 5 pixels across both ways is no line of pixels, whose normal is free to
+// turn about the line: its plane is settled at 24 members, and a facing one is dropped then
+// (0.06 ms less on the office frame; lab and field recall unchanged).
+constexpr std::size_t kSettledBlob = 24;
+constexpr int kMinBlobSide = 5;
 constexpr int kWindow = 2;            // seed window: (2 kWindow + 1)^2 pixels
 constexpr int kMinWindowPoints = 12;  // free pixels of it for a fit
 constexpr int kSeedStride = 2;        // seeds tried on every second pixel and row
@@ -195,7 +200,9 @@ int grow_residual_slivers(const OrganizedCloud& cloud, const GrowOptions& option
             // A region that turns out to face the camera is no sliver: the cells had their
             // chance at it, and growing it pixel by pixel would cost what the cells save.
             const Eigen::Vector3d centroid = model.mean_point();
-            if (queue.size() >= kSettledModel && std::abs(normal.dot(centroid)) > cos_region * centroid.norm()) {
+            const bool blob = std::min(bu1 - bu0, bv1 - bv0) + 1 >= kMinBlobSide;
+            if ((queue.size() >= kSettledModel || (blob && queue.size() >= kSettledBlob)) &&
+                std::abs(normal.dot(centroid)) > cos_region * centroid.norm()) {
               facing = true;
               break;
             }
