@@ -76,12 +76,16 @@ double noise_coefficient(const CellGrid& grid, std::vector<double>& ratios) {
   constexpr double kQuantile = 0.25;
   constexpr std::size_t kMinCells = 16;
   ratios.clear();
+  // The quartile of mse / z^4, then its root: the same cell, without a root per cell.
   for (const CellFit& c : grid.cells)
-    if (c.fitted && c.mean.z() > 0) ratios.push_back(std::sqrt(c.mse) / (c.mean.z() * c.mean.z()));
+    if (c.fitted && c.mean.z() > 0) {
+      const double z2 = c.mean.z() * c.mean.z();
+      ratios.push_back(c.mse / (z2 * z2));
+    }
   if (ratios.size() < kMinCells) return 0.0;
   const auto q = ratios.begin() + static_cast<std::ptrdiff_t>(kQuantile * static_cast<double>(ratios.size() - 1));
   std::nth_element(ratios.begin(), q, ratios.end());
-  return *q;
+  return std::sqrt(*q);
 }
 
 }  // namespace
