@@ -225,17 +225,23 @@ void assign_pixels(const OrganizedCloud& cloud, const CellGrid& grid, double eps
       const std::int32_t own = s.cell_labels[ci];
       std::int32_t cand[9];
       int ncand = 0;
-      for (int dv = -1; dv <= 1; ++dv) {
-        const int nv = cv + dv;
-        if (nv < 0 || nv >= grid.rows) continue;
-        for (int du = -1; du <= 1; ++du) {
-          const int nu = cu + du;
-          if (nu < 0 || nu >= grid.cols || (own > 0 && du != 0 && dv != 0)) continue;
-          const std::int32_t l = s.cell_labels[grid.index(nu, nv)];
-          if (l > 0 && std::find(cand, cand + ncand, l) == cand + ncand) cand[ncand++] = l;
-        }
+      const auto consider = [&](std::int32_t l) {
+        if (l > 0 && std::find(cand, cand + ncand, l) == cand + ncand) cand[ncand++] = l;
+      };
+      const std::int32_t* labels = s.cell_labels.data();
+      if (own > 0) {  // the 4 neighbours, in raster order
+        if (cv > 0) consider(labels[ci - grid.cols]);
+        if (cu > 0) consider(labels[ci - 1]);
+        consider(own);
+        if (cu + 1 < grid.cols) consider(labels[ci + 1]);
+        if (cv + 1 < grid.rows) consider(labels[ci + grid.cols]);
+        if (ncand > 1)
+          ncand = drop_coincident_planes(s.assign_planes, own, grid.cells[ci].mean, coincidence, cand, ncand);
+      } else {
+        for (int nv = std::max(0, cv - 1); nv <= std::min(grid.rows - 1, cv + 1); ++nv)
+          for (int nu = std::max(0, cu - 1); nu <= std::min(grid.cols - 1, cu + 1); ++nu)
+            consider(labels[grid.index(nu, nv)]);
       }
-      if (own > 0 && ncand > 1) ncand = drop_coincident_planes(s.assign_planes, own, grid.cells[ci].mean, coincidence, cand, ncand);
       if (ncand == 0) {
         for (int v = v0; v < v1; ++v) std::fill_n(out.labels.data() + cloud.index(u0, v), u1 - u0, 0);
         continue;
