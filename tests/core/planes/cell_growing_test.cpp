@@ -97,39 +97,6 @@ TEST(CellGrowing, StepAlongACellBorderSplitsTheWallAndEveryPixelIsLabelled) {
   EXPECT_NEAR(area, (160 * 2.0 / 570) * (120 * 2.0 / 570), 0.01);
 }
 
-TEST(CellGrowing, TwoPlanesThatCoincideAtTheirBorderMeetAlongTheCellBorder) {
-  // A wall 2 m away folded by 7.5 degrees along the cell border u = 80, with 0.5 mm of depth
-  // noise: two planes (the fold exceeds the angle test), nearly coincident next to the fold.
-  // Pixels there lie within epsilon of both; the cells on each side keep theirs, so the border
-  // is the cell border and not a line of noise-picked pixels.
-  const int w = 160, h = 120;
-  const double f = 570.0, t = 7.5 * M_PI / 180.0, x0 = (80 - w / 2.0) / f * 2.0;
-  std::mt19937 rng(5);
-  std::normal_distribution<double> noise(0.0, 0.0005);
-  OrganizedCloud c = hand_cloud(w, h, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
-    const double a = (u - w / 2.0) / f, b = (v - h / 2.0) / f;
-    const double z = (u < 80 ? 2.0 : (2.0 - x0 * std::tan(t)) / (1.0 - a * std::tan(t))) + noise(rng);
-    p = Eigen::Vector3f(static_cast<float>(a * z), static_cast<float>(b * z), static_cast<float>(z));
-  });
-  c.intrinsics.fx = c.intrinsics.fy = f;
-  c.intrinsics.cx = w / 2.0, c.intrinsics.cy = h / 2.0;
-  GrowOptions o;
-  o.cell_px = 8;
-  const PlaneSegments planes = extract_planes(c, o);
-  ASSERT_EQ(planes.planes.size(), 2u);
-  const int left_id = planes.labels[c.index(0, 0)];
-  int crossed = 0;
-  for (int v = 0; v < h; ++v)
-    for (int u = 0; u < w; ++u) {
-      const int id = planes.labels[c.index(u, v)];
-      ASSERT_GT(id, 0) << u << "," << v;
-      crossed += (id == left_id) != (u < 80);
-    }
-  EXPECT_EQ(crossed, 0);
-  const double cos_fold = std::abs(planes.planes[0].normal.dot(planes.planes[1].normal));
-  EXPECT_NEAR(std::acos(std::min(1.0, cos_fold)) * 180.0 / M_PI, 7.5, 0.3);
-}
-
 TEST(CellGrowing, ReadsNoNormalsAndPlanesCliSkipsThem) {
   OrganizedCloud c = stepped_wall(64, 48, 1000, 0.0);  // one flat wall
   c.normals.clear();
