@@ -81,7 +81,7 @@ const std::vector<RecordedFrame>& recorded() {
   return frames;
 }
 
-PlaneSegments planes_of(const RecordedFrame& r) {
+OrganizedCloud cloud_of(const RecordedFrame& r) {
   ReadOptions opt;
   Intrinsics K;
   K.fx = r.fx, K.fy = r.fy, K.cx = r.cx, K.cy = r.cy;
@@ -92,8 +92,10 @@ PlaneSegments planes_of(const RecordedFrame& r) {
   OrganizedCloud cloud;
   build_cloud(frame, cloud_options(p), cloud);
   estimate_normals(normal_options(p), cloud);
-  return extract_planes(cloud, grow_options(p));
+  return cloud;
 }
+
+PlaneSegments planes_of(const RecordedFrame& r) { return extract_planes(cloud_of(r), grow_options(Parameters())); }
 
 bool found_again(const RecordedPlane& old, const PlaneSegments& now) {
   const double cos_max = std::cos(kMaxAngleDeg * M_PI / 180.0);
@@ -133,6 +135,46 @@ void expect_not_worse(const RecordedFrame& r) {
 TEST(RealFramePlanes, CapeTunnelNotWorse) { expect_not_worse(recorded()[0]); }
 TEST(RealFramePlanes, PclOfficeNotWorse) { expect_not_worse(recorded()[1]); }
 TEST(RealFramePlanes, RtabmapLabNotWorse) { expect_not_worse(recorded()[2]); }
+
+// The cell order (grow.cell_px = 8) cuts the same frames into other planes (fewer on cape's
+// curved tunnel, more in rtabmap's clutter), so its planes are not the recorded ones. What it
+// must keep is the surfaces: the pixels of each large plane of the default order (>= 0.05 m^2
+// and >= 100 pixels) lie on planes of the cell order (95 % of them at least), within epsilon
+// (RMS). Measured: 97.2-100 % of each plane's pixels, at 0.3-9.2 mm RMS. The one large plane of fewer
+// pixels, a 49-pixel sliver seen edge-on at 3.5 m in rtabmap (its 0.067 m^2 is its grazing
+// footprint), is 65 % covered: the frame's noise there is beyond the last pass's 4 mm limit.
+TEST(RealFramePlanes, CellOrderExplainsTheLargePlanesOfTheDefaultOrder) {
+  constexpr double kMinCovered = 0.95;
+  constexpr int kMinPixels = 100;
+  for (const RecordedFrame& r : recorded()) {
+    SCOPED_TRACE(r.file);
+    const OrganizedCloud cloud = cloud_of(r);
+    const Parameters p;
+    const PlaneSegments grid = extract_planes(cloud, grow_options(p));
+    GrowOptions by_cells = grow_options(p);
+    by_cells.cell_px = 8;
+    const PlaneSegments cells = extract_planes(cloud, by_cells);
+    for (const PlaneSegment& g : grid.planes) {
+      if (g.area_m2 < 0.05 || g.points < kMinPixels) continue;
+      long n = 0, covered = 0;
+      double sq = 0.0;
+      for (std::size_t i = 0; i < grid.labels.size(); ++i) {
+        if (grid.labels[i] != g.id) continue;
+        ++n;
+        if (cells.labels[i] <= 0) continue;
+        ++covered;
+        const PlaneSegment& q = cells.planes[cells.labels[i] - 1];
+        const double d = q.normal.dot(cloud.points[i].cast<double>()) + q.offset_m;
+        sq += d * d;
+      }
+      ASSERT_GT(n, 0);
+      EXPECT_GE(static_cast<double>(covered) / n, kMinCovered) << "plane " << g.id << ", " << n << " pixels";
+      if (covered > 0) {
+        EXPECT_LE(std::sqrt(sq / covered), by_cells.distance_m) << "plane " << g.id;
+      }
+    }
+  }
+}
 
 // The matching rule itself can fail: a plane tilted by 10 degrees, or shifted by 10 cm, or
 // covering half the area, is not the recorded plane.
