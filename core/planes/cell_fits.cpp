@@ -25,11 +25,21 @@ float hsum(__m128 a) {
 bool reference_point(const OrganizedCloud& cloud, int u0, int v0, int u1, int v1, Eigen::Vector3f& ref) {
   const Eigen::Vector3f& c = cloud.points[cloud.index((u0 + u1) / 2, (v0 + v1) / 2)];
   if (OrganizedCloud::valid(c)) return ref = c, true;
-  for (int v = v0; v < v1; ++v)
-    for (int u = u0; u < u1; ++u) {
+  // Four pixels per step: cells without a valid centre are often wholly invalid (no return).
+  for (int v = v0; v < v1; ++v) {
+    const float* row = cloud.points[cloud.index(0, v)].data();
+    int u = u0;
+    for (; u + 4 <= u1; u += 4) {
+      __m128 x, y, z;
+      load_xyz4(row + 3 * u, x, y, z);
+      const int ok = _mm_movemask_ps(_mm_cmpeq_ps(x, x));
+      if (ok != 0) return ref = cloud.points[cloud.index(u + __builtin_ctz(ok), v)], true;
+    }
+    for (; u < u1; ++u) {
       const Eigen::Vector3f& p = cloud.points[cloud.index(u, v)];
       if (OrganizedCloud::valid(p)) return ref = p, true;
     }
+  }
   return false;
 }
 

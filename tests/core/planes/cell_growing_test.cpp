@@ -67,6 +67,25 @@ TEST(CellFits, TiltedPlaneCellsFitExactlyAndStepCellsDoNot) {
   EXPECT_TRUE(grid.cells[1].planar);
 }
 
+TEST(CellFits, ACellWithoutItsCentrePixelIsFittedAboutAnotherOfItsPoints) {
+  // The moments are taken about a point of the cell: its centre, else the first valid pixel.
+  // Here the centre and the first three rows and a half are invalid.
+  OrganizedCloud c = stepped_wall(16, 8, 1000, 0.0);
+  for (int v = 0; v < 8; ++v)
+    for (int u = 0; u < 8; ++u)
+      if (v < 3 || (v == 3 && u < 5) || (u == 4 && v == 4)) c.points[c.index(u, v)] = tunnelmap::testing::no_normal();
+  CellGrid grid;
+  compute_cell_fits(c, 8, 32, 0.001, grid);
+  ASSERT_EQ(grid.cells.size(), 2u);
+  EXPECT_EQ(grid.cells[0].count, 64 - 24 - 5 - 1);
+  EXPECT_EQ(grid.cells[1].count, 64);
+  for (const CellFit& f : grid.cells) {
+    EXPECT_TRUE(f.planar);
+    EXPECT_NEAR(std::abs(f.normal.z()), 1.0, 1e-6);
+    EXPECT_NEAR(f.mean.z(), 2.0, 1e-6);
+  }
+}
+
 TEST(CellGrowing, StepAlongACellBorderSplitsTheWallAndEveryPixelIsLabelled) {
   // The step falls exactly on a cell border (u = 80): no cell straddles it, and the 8 mm offset
   // passes the eq. 2 distance test (15 mm); the continuity test still keeps the two apart.
