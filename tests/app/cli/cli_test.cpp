@@ -80,7 +80,7 @@ TEST(Cli, DetectWritesTheDocumentedJsonAndAMapPly) {
 TEST(Cli, PlanesReportsPlanesMedianTimingsAndALabelImage) {
   IoTempDir tmp;
   const auto r = run_cli("planes " + kRealFrame + " --intrinsics 525,525,319.5,239.5 --repeat 3 --json " +
-                         tmp.file("p.json") + " --labels " + tmp.file("labels.png"));
+                         tmp.file("p.json") + " --labels " + tmp.file("labels.png") + " --set grow.cell_px=0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = read_json(tmp.file("p.json"));
   ASSERT_EQ(j["frames"].size(), 1u);
@@ -103,6 +103,24 @@ TEST(Cli, PlanesReportsPlanesMedianTimingsAndALabelImage) {
   double max_label = 0;
   cv::minMaxLoc(labels, nullptr, &max_label);
   EXPECT_EQ(static_cast<std::size_t>(max_label), f["planes"].size());
+}
+
+// The cell order reports its own stages and no normals stage (it reads no per-pixel normals).
+TEST(Cli, PlanesInCellOrderReportsItsStages) {
+  IoTempDir tmp;
+  const auto r = run_cli("planes " + kRealFrame + " --intrinsics 525,525,319.5,239.5 --repeat 3 --json " +
+                         tmp.file("p.json") + " --set grow.cell_px=8");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = read_json(tmp.file("p.json"));
+  const auto& f = j["frames"][0];
+  ASSERT_GT(f["planes"].size(), 3u);
+  const auto& t = f["timings_ms"];
+  EXPECT_EQ(t.value("normals", 0.0), 0.0);
+  for (const char* stage : {"cell_fits", "block_normals", "grow", "assign", "contours"}) {
+    ASSERT_TRUE(t.contains(stage)) << stage;
+    EXPECT_GT(t[stage].get<double>(), 0.0) << stage;
+    EXPECT_LE(t[stage].get<double>(), t["planes"].get<double>() * 1.05) << stage;
+  }
 }
 
 TEST(Cli, ParamsListsEveryKeyWithDefaultsAndRanges) {

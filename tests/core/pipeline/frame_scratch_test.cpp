@@ -51,9 +51,11 @@ const std::vector<DepthFrame>& frames() {
   return f;
 }
 
-Pipeline lab_pipeline() {
+// `cell_px` -1 keeps the preset's growing order.
+Pipeline lab_pipeline(int cell_px = -1) {
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/lab.json");
+  if (cell_px >= 0) params.set("grow.cell_px", cell_px);
   Pipeline p(params);
   p.set_world_up(Eigen::Vector3d::UnitZ());
   return p;
@@ -105,7 +107,7 @@ TEST(FrameScratch, ResultsDoNotDependOnWhatTheScratchHeldBefore) {
 }
 
 TEST(FrameScratch, CopiesOfAResultCarryNoBuffers) {
-  const Pipeline pipeline = lab_pipeline();
+  const Pipeline pipeline = lab_pipeline(0);  // the pixel grid: the order with per-pixel normals
   FrameResult r;
   pipeline.run(frames()[0], r);
   // A VGA frame's normals stage keeps three one-byte images of 640 x 480.
@@ -130,6 +132,18 @@ TEST(FrameScratch, CopiesOfAResultCarryNoBuffers) {
   const FrameResult once = pipeline.run(frames()[0]);
   EXPECT_TRUE(once.scratch.normals.edges.empty());
   EXPECT_TRUE(once.scratch.planes.coarse.points.empty());
+}
+
+TEST(FrameScratch, CopiesOfACellOrderResultCarryNoCellGrid) {
+  const Pipeline pipeline = lab_pipeline(8);
+  FrameResult r;
+  pipeline.run(frames()[0], r);
+  ASSERT_EQ(r.scratch.planes.cells.grid.cells.size(), 80u * 60u);  // 8-pixel cells of a VGA frame
+  EXPECT_TRUE(r.scratch.normals.edges.empty()) << "the cell order needs no per-pixel normals";
+  const FrameResult copy = r;
+  EXPECT_TRUE(copy.planes.labels == r.planes.labels);
+  EXPECT_TRUE(copy.scratch.planes.cells.grid.cells.empty());
+  EXPECT_EQ(r.scratch.planes.cells.grid.cells.size(), 80u * 60u);
 }
 
 TEST(FrameScratch, ThreadsSharingOneConstPipelineGetTheSerialResults) {

@@ -19,7 +19,7 @@ struct SequenceScore {
   double width_std_mm = 0, height_std_mm = 0;
 };
 
-// grid_step 0 = the table's default (coarse-to-fine, 2); 1 = the paper's every-pixel growing.
+// grid_step 0 = the table's default order; 1 = the paper's every-pixel growing (the pixel grid).
 SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames, int grid_step = 0) {
   SimConfig config = SimConfig::from_preset(preset);
   config.seed = seed;
@@ -27,7 +27,10 @@ SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames,
   const TunnelSimulator sim(config);
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
-  if (grid_step > 0) params.set("grow.grid_step", grid_step);
+  if (grid_step > 0) {  // the pixel grid
+    params.set("grow.cell_px", 0);
+    params.set("grow.grid_step", grid_step);
+  }
   Pipeline pipeline(params);
   pipeline.set_world_up(Eigen::Vector3d::UnitZ());
   TunnelContext context;

@@ -178,6 +178,7 @@ double polygon_area_m2(const std::vector<Eigen::Vector3d>& poly) {
 // same area on the plane).
 void expect_pipeline_matches_opencv(const DepthFrame& frame, const std::string& name) {
   Parameters params;
+  params.set("grow.cell_px", 0);  // the pixel grid: the cell order traces on every 4th pixel
   params.set("grow.grid_step", 1);  // the contours are then traced on the labels we get back
   OrganizedCloud cloud;
   build_cloud(frame, cloud_options(params), cloud);

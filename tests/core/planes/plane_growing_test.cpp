@@ -224,6 +224,7 @@ TEST(PlaneGrowingFastPath, EdgeOnPassRecoversWallsTheGridCannotConnect) {
   const Eigen::Vector3d mn(0.0, -0.5, 0.0), mx(15.0, 0.5, 1.0);
   const auto s = render_planes(box_room(mn, mx), look_at({0.2, 0.0, 0.5}, {15.0, 0.0, 0.5}), mn, mx, 0.001, 3);
   GrowOptions every_pixel, grid_only, with_pass;
+  every_pixel.cell_px = grid_only.cell_px = with_pass.cell_px = 0;  // the pixel grid's passes
   every_pixel.grid_step = 1;
   grid_only.edge_on_pass = false;
   const PlaneSegments exact = run_pgc(s.frame, every_pixel), grid = run_pgc(s.frame, grid_only),

@@ -212,6 +212,7 @@ TEST(RegionGrower, EveryPixelGrowingDropsRegionsBelowMinPoints) {
     if (a || b) n = kFacing;
   });
   GrowOptions opt;
+  opt.cell_px = 0;  // the pixel grid
   opt.grid_step = 1;
   opt.min_points = 40;
   opt.min_area_m2 = 0.0;
