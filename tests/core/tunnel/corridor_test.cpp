@@ -118,7 +118,7 @@ TEST(CorridorPreset, SimulatedCorridor4mWideEveryFrameWithin30mmWhereTheDefaults
 // Single frames (no station map) of a 5 m corridor, walls 2.5 m away seen 4.5-6 m ahead: with the
 // zone support and gap scaled each far wall is one zone; with both fixed its noisy fragments are
 // zones of their own and the outermost fragment bounds the wall.
-TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
+SimConfig five_metre_corridor() {
   SimConfig c = SimConfig::from_preset("lab");
   c.width_m = 5.0;
   c.height_m = 2.4;
@@ -131,6 +131,11 @@ TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
   walk.stops = 6;
   walk.pose = SimCameraPose{0.0, 0.5, 0.0, 0.0, 0.0};
   c.walk = walk;
+  return c;
+}
+
+TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
+  const SimConfig c = five_metre_corridor();
   const TunnelSimulator sim(c);
 
   Parameters scaled;
@@ -165,6 +170,28 @@ TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
   EXPECT_LT(std::abs(mean_scaled), 0.005);
   EXPECT_LT(sd_scaled, 0.004);
   EXPECT_GT(mean_fixed, 0.008);
+}
+
+// The cell order (grow.cell_px = 8) on the same far walls: each a plane or two, parallel, every
+// frame measured. Measured: 4.984-4.985 m (the surface between the middle plates: 4.984 m), 4-5
+// planes per frame. With epsilon as the noisy cells' only distance bound the walls broke into
+// 12 planes each and 3 of the 6 frames found no parallel pair (15-17 degrees).
+TEST(CorridorPreset, CellOrderKeepsTheFarWallsOfA5mCorridorWhole) {
+  const SimConfig c = five_metre_corridor();
+  const TunnelSimulator sim(c);
+  Parameters p;
+  p.load_json_file(kPresets + "corridor.json");
+  p.set("grow.cell_px", 8);
+  const Pipeline pipeline(p);
+  FrameResult r;
+  for (int i = 0; i < c.frames; ++i) {
+    pipeline.run(sim.render(i).frame, r);
+    ASSERT_EQ(r.map.status, TunnelStatus::Ok) << i << ": " << r.map.reason;
+    EXPECT_NEAR(r.map.width_m, 5.0 - 0.016, 0.005) << i;
+    int side_planes = 0;
+    for (const PlaneSegment& q : r.planes.planes) side_planes += std::abs(q.normal.x()) > 0.9 && q.area_m2 > 0.05;
+    EXPECT_LE(side_planes, 4) << i;
+  }
 }
 
 // The real frames: none is a rectangular tunnel. Each preset must give a map whose sizes are
