@@ -143,7 +143,9 @@ TEST_F(SectionWalk, StationProfileIsWithin4mmAwayFromTheJointsAndJointsWithin20c
     EXPECT_NEAR(s["width_m"].get<double>(), truth[i].width, 0.004);
     EXPECT_NEAR(s["height_m"].get<double>(), truth[i].height, 0.004);
     EXPECT_GT(s["frames"].get<int>(), 5);
-    if (i > 0) EXPECT_NEAR(ox + ax * s["from_m"].get<double>(), truth[i].from_x, 0.2);
+    if (i > 0) {
+      EXPECT_NEAR(ox + ax * s["from_m"].get<double>(), truth[i].from_x, 0.2);
+    }
   }
 }
 
@@ -161,7 +163,9 @@ TEST_F(SectionWalk, DeviationsFromTheDesignMarkTheNarrowSectionOutOfTolerance) {
     if (st["width_source"] == "measured") {
       const double dev = st["width_dev_mm"].get<double>();
       EXPECT_NEAR(dev, (st["width_m"].get<double>() - 0.82) * 1000.0, 0.011);
-      if (std::abs(dev) > 10.0) EXPECT_TRUE(st["out_of_tolerance"].get<bool>());
+      if (std::abs(dev) > 10.0) {
+        EXPECT_TRUE(st["out_of_tolerance"].get<bool>());
+      }
     }
     out += st["out_of_tolerance"].get<bool>();
   }
@@ -179,7 +183,18 @@ TEST_F(SectionWalk, CsvHasOneRowPerStationAndPlyOneSweptBoxPerSection) {
   EXPECT_EQ(testing::count_lines(csv), static_cast<int>(m["stations"].size()) + 1);
   const std::string ply = slurp(dir->file("map.ply"));
   EXPECT_NE(ply.find("comment sections 3\n"), std::string::npos);
-  EXPECT_NE(ply.find("comment section 1 0.79"), std::string::npos);
+  // Each section's comment carries its box's width and height, within 5 mm of the section's true
+  // size (0.84 x 1.30, 0.80 x 1.28, 0.82 x 1.32 m).
+  const double truth[3][2] = {{0.84, 1.30}, {0.80, 1.28}, {0.82, 1.32}};
+  for (int i = 0; i < 3; ++i) {
+    const std::string key = "comment section " + std::to_string(i) + " ";
+    const std::size_t at = ply.find(key);
+    ASSERT_NE(at, std::string::npos) << key;
+    double w = 0, h = 0;
+    ASSERT_EQ(std::sscanf(ply.c_str() + at + key.size(), "%lf %lf", &w, &h), 2) << key;
+    EXPECT_NEAR(w, truth[i][0], 0.005) << key;
+    EXPECT_NEAR(h, truth[i][1], 0.005) << key;
+  }
 }
 
 TEST_F(SectionWalk, FuseMapFollowsTheSectionsToo) {
@@ -219,8 +234,9 @@ TEST_F(SectionWalk, PosedDetectionTakesTheChangesOfSectionAndMeasuresEachPartOfA
       if (p["width_m"].is_null()) continue;
       const double a = ox + p["from_m"].get<double>(), b = ox + p["to_m"].get<double>();
       for (const TrueSection& t : truth)
-        if (a >= t.from_x + 0.15 && b <= t.to_x - 0.15 && b - a > 0.3)
+        if (a >= t.from_x + 0.15 && b <= t.to_x - 0.15 && b - a > 0.3) {
           EXPECT_NEAR(p["width_m"].get<double>(), t.width, 0.004);
+        }
     }
     two_part_frames += f["parts"].size() >= 2;
   }
