@@ -200,7 +200,7 @@ TEST(RealFramePlanes, CellOrderExplainsTheLargePlanesOfTheDefaultOrder) {
 // The cell order against the records: it explains as many pixels and as much area, and does not
 // shatter them into more planes. Its planes are not the recorded ones (see above), so the count
 // is judged per labelled pixel: planes per pixel at most 15 % above the record's. Measured with
-// 8-pixel cells: 1.4-2.7 times the pixels and 1.8-3.8 times the area, at 0.42-0.95 times the
+// 8-pixel cells: 1.4-2.7 times the pixels and 1.8-3.8 times the area, at 0.42-0.96 times the
 // planes per pixel.
 TEST(RealFramePlanes, CellOrderLabelsAsMuchInNoMorePiecesThanTheRecords) {
   for (const RecordedFrame& r : recorded()) {
