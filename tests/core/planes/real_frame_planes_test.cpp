@@ -105,7 +105,9 @@ GrowOptions options_of(int cell_px) {
   return o;
 }
 
-PlaneSegments planes_of(const RecordedFrame& r, int cell_px = 0) { return extract_planes(cloud_of(r), options_of(cell_px)); }
+PlaneSegments planes_of(const RecordedFrame& r, int cell_px = 0) {
+  return extract_planes(cloud_of(r), options_of(cell_px));
+}
 
 struct Totals {
   int planes = 0;

@@ -115,9 +115,8 @@ TEST(CorridorPreset, SimulatedCorridor4mWideEveryFrameWithin30mmWhereTheDefaults
   expect_box_girder_presets_refuse(dir);
 }
 
-// Single frames (no station map) of a 5 m corridor, walls 2.5 m away seen 4.5-6 m ahead: with the
-// zone support and gap scaled each far wall is one zone; with both fixed its noisy fragments are
-// zones of their own and the outermost fragment bounds the wall.
+// A 5 m corridor 2.4 m high, six frames along 2 m, the camera level at mid-height: its walls
+// 2.5 m away are seen 4.5-6 m ahead.
 SimConfig five_metre_corridor() {
   SimConfig c = SimConfig::from_preset("lab");
   c.width_m = 5.0;
@@ -134,6 +133,9 @@ SimConfig five_metre_corridor() {
   return c;
 }
 
+// Single frames (no station map): with the zone support and gap scaled each far wall is one zone;
+// with both fixed its noisy fragments are zones of their own and the outermost fragment bounds
+// the wall.
 TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
   const SimConfig c = five_metre_corridor();
   const TunnelSimulator sim(c);
