@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/plane_recall_normals.h"
 #include "bench/plane_recall_tally.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
@@ -36,6 +37,10 @@ const char* const kUsage =
     "  --presets-dir DIR preset JSON files (default: the source tree's resources/presets)\n"
     "  --csv FILE        one row per true surface and frame\n"
     "  --markdown FILE   the report (also printed on stdout)\n"
+    "  --normal-errors FILE  the cell order's block normals against the true surfaces, by range\n"
+    "                    (needs grow.cell_px > 0)\n"
+    "  --max-normal-error-ratio R  exit 1 when, in a range band of at least 100 cells, the median\n"
+    "                    block-normal error exceeds R times its claimed standard error (1.18 when right)\n"
     "  --min-recall R    exit 1 when any preset x grid step has recall below R (0..1)\n"
     "  --min-precision P exit 1 when any preset x grid step has precision below P (0..1)\n";
 
@@ -52,8 +57,9 @@ struct Options {
   std::vector<int> grid_steps{1, 2};
   std::vector<std::string> sets;
   std::string presets_dir = kDefaultPresetsDir;
-  std::string csv, markdown;
+  std::string csv, markdown, normal_errors;
   double min_recall = 0.0, min_precision = 0.0;  // regression limits (0 = none)
+  double max_normal_error_ratio = 0.0;            // 0 = none
 };
 
 double parse_fraction(const std::string& option, const std::string& text) {
@@ -106,7 +112,7 @@ Options parse_options(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const kValued[] = {"--seeds", "--stride", "--presets", "--grid-steps",
-                                          "--set", "--presets-dir", "--csv", "--markdown",
+                                          "--set", "--presets-dir", "--csv", "--markdown", "--normal-errors", "--max-normal-error-ratio",
                                           "--min-recall", "--min-precision"};
     if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
       throw UsageError(arg.rfind("-", 0) == 0 ? "unknown option '" + arg + "' (see --help)"
@@ -135,6 +141,17 @@ Options parse_options(int argc, char** argv) {
       o.presets_dir = value;
     } else if (arg == "--csv") {
       o.csv = value;
+    } else if (arg == "--normal-errors") {
+      o.normal_errors = value;
+    } else if (arg == "--max-normal-error-ratio") {
+      std::size_t used = 0;
+      try {
+        o.max_normal_error_ratio = std::stod(value, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != value.size() || !(o.max_normal_error_ratio > 0 && o.max_normal_error_ratio < 1e6))
+        throw UsageError(arg + ": '" + value + "' is not a positive ratio");
     } else if (arg == "--min-recall") {
       o.min_recall = parse_fraction(arg, value);
     } else if (arg == "--min-precision") {
@@ -143,6 +160,8 @@ Options parse_options(int argc, char** argv) {
       o.markdown = value;
     }
   }
+  if (o.max_normal_error_ratio > 0 && o.normal_errors.empty())
+    throw UsageError("--max-normal-error-ratio needs --normal-errors FILE");
   return o;
 }
 
@@ -188,7 +207,8 @@ void append_csv_row(std::string& csv, const recall::RunTally& t, unsigned seed, 
 }
 
 // One preset x grid step over every seed and frame.
-recall::RunTally run(const Options& o, const std::string& preset, int grid_step, std::string* csv) {
+recall::RunTally run(const Options& o, const std::string& preset, int grid_step, std::string* csv,
+                     recall::NormalErrors* normal_errors) {
   Parameters params;
   params.load_json_file(o.presets_dir + "/" + preset + ".json");
   for (const auto& s : o.sets) params.set_from_string(s);
@@ -196,6 +216,8 @@ recall::RunTally run(const Options& o, const std::string& preset, int grid_step,
   const Pipeline pipeline(params);
   const GrowOptions grow = grow_options(params);
   const SegmentationOptions scoring = SegmentationOptions::by_size(grow.min_points, grow.min_area_m2);
+  if (normal_errors && grow.cell_px <= 0)
+    throw UsageError("--normal-errors measures the cell order: add --set grow.cell_px=8 (or another size)");
 
   recall::RunTally t;
   t.preset = preset;
@@ -212,6 +234,9 @@ recall::RunTally run(const Options& o, const std::string& preset, int grid_step,
       const SimFrame frame = sim.render(i);
       pipeline.run(frame.frame, result);
       t.score += score_segmentation(result.planes, frame.surface_id, result.cloud, scoring, &details);
+      if (normal_errors)
+        normal_errors->add_frame(result.scratch.planes.cells.grid, result.cloud.width, result.cloud.height,
+                                 frame.surface_id, details);
       ++t.frames;
       // Pixels of each surface that carry a normal (the growing's raw material); the cell order
       // computes no per-pixel normals and counts none.
@@ -237,13 +262,21 @@ int main(int argc, char** argv) {
     // Fail now, not after minutes of work.
     if (!o.csv.empty()) check_output_path(o.csv);
     if (!o.markdown.empty()) check_output_path(o.markdown);
+    if (!o.normal_errors.empty()) check_output_path(o.normal_errors);
     for (const auto& preset : o.presets) Parameters().load_json_file(o.presets_dir + "/" + preset + ".json");
 
     std::string csv = kCsvHeader;
     std::vector<recall::RunTally> runs;
+    std::vector<recall::NormalErrors> normal_errors;
     for (const auto& preset : o.presets)
       for (int step : o.grid_steps) {
-        runs.push_back(run(o, preset, step, o.csv.empty() ? nullptr : &csv));
+        recall::NormalErrors* errors = nullptr;
+        if (!o.normal_errors.empty()) {
+          normal_errors.emplace_back();
+          normal_errors.back().preset = preset + ", step " + std::to_string(step);
+          errors = &normal_errors.back();
+        }
+        runs.push_back(run(o, preset, step, o.csv.empty() ? nullptr : &csv, errors));
         const recall::RunTally& t = runs.back();
         std::fprintf(stderr, "%s, grid step %d: %ld frames, recall %.4f (%ld / %ld), precision %.4f (%ld / %ld)\n",
                      preset.c_str(), step, t.frames, t.score.recall(), t.score.found_surfaces, t.score.surfaces,
@@ -253,7 +286,20 @@ int main(int argc, char** argv) {
     std::cout << report;
     if (!o.markdown.empty()) write_file_atomically(o.markdown, [&](std::ostream& out) { out << report; });
     if (!o.csv.empty()) write_file_atomically(o.csv, [&](std::ostream& out) { out << csv; });
+    if (!o.normal_errors.empty()) {
+      const std::string table = recall::normal_error_report(normal_errors);
+      write_file_atomically(o.normal_errors, [&](std::ostream& out) { out << table; });
+    }
     int status = 0;
+    if (o.max_normal_error_ratio > 0) {
+      std::string where;
+      const double worst = recall::worst_median_error_ratio(normal_errors, 100, where);
+      if (worst > o.max_normal_error_ratio) {
+        std::fprintf(stderr, "FAIL: %s median block-normal error %.2f times its standard error > %.2f\n",
+                     where.c_str(), worst, o.max_normal_error_ratio);
+        status = 1;
+      }
+    }
     for (const recall::RunTally& t : runs) {
       if (t.score.recall() < o.min_recall) {
         std::fprintf(stderr, "FAIL: %s grid step %d recall %.4f < %.4f\n", t.preset.c_str(), t.grid_step,

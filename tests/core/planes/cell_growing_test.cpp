@@ -3,11 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
+#include <string>
 
 #include "core/planes/cell_fits.h"
 #include "core/planes/cell_moments_avx2.h"
+#include "core/pipeline/pipeline.h"
 #include "core/planes/plane_growing.h"
+#include "core/sim/tunnel_simulator.h"
 #include "tests/core/planes/hand_cloud.h"
 
 using namespace tunnelmap;
@@ -279,5 +283,44 @@ TEST(CellGrowing, FarWallNoisierThanHalfEpsilonIsOnePlane) {
     EXPECT_NEAR(off, wall, 0.003) << off;
     // Each wall is 64 x 96 pixels; the far one loses at most its border pixels beyond epsilon.
     EXPECT_GE(p.points, wall < 3 ? 64 * 96 * 0.97 : 64 * 96 * 0.8) << "wall at " << wall << " m";
+  }
+}
+
+TEST(CellGrowing, PlateStepsCutNoStripsOfTheirOwn) {
+  // A field frame looking down the floor: its 6-12 mm plate steps run along the tunnel, and the
+  // cells they cross used to grow two strips of their own there (1,709 and 1,875 pixels, each
+  // half middle plate and half edge band, 13 degrees off the floor). Those cells are left to the
+  // per-pixel assignment now: every plane lies mostly on one plate, and the plates keep their
+  // pixels.
+  Parameters params;
+  params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/field.json");
+  params.set_from_string("grow.cell_px=8");
+  SimConfig config = SimConfig::from_preset("field");
+  config.seed = 102;
+  const TunnelSimulator sim(config);
+  const SimFrame frame = sim.render(15);
+  FrameResult r;
+  Pipeline(params).run(frame.frame, r);
+  ASSERT_GT(r.planes.planes.size(), 10u);
+  std::map<int, std::map<int, long>> on_surface;  // plane id -> surface id -> pixels
+  for (std::size_t k = 0; k < r.planes.labels.size(); ++k)
+    if (r.planes.labels[k] > 0) ++on_surface[r.planes.labels[k]][frame.surface_id[k]];
+  for (const PlaneSegment& p : r.planes.planes) {
+    long all = 0, most = 0;
+    for (const auto& [surface, pixels] : on_surface[p.id]) all += pixels, most = std::max(most, pixels);
+    EXPECT_GT(2 * most, all) << "plane " << p.id << " of " << all << " pixels";
+  }
+  // The floor's plates keep at least 95 % of their valid pixels labelled (measured 96.9-97.6 %,
+  // and 96.5-97.3 % with the strips).
+  for (const char* name : {"bottom/middle", "bottom/edge_left", "bottom/edge_right"}) {
+    long valid = 0, labelled = 0;
+    for (std::size_t k = 0; k < frame.surface_id.size(); ++k) {
+      const SimSurface* s = sim.surface(frame.surface_id[k]);
+      if (!s || s->name != name || !OrganizedCloud::valid(r.cloud.points[k])) continue;
+      ++valid;
+      labelled += r.planes.labels[k] > 0;
+    }
+    ASSERT_GT(valid, 2000) << name;
+    EXPECT_GE(static_cast<double>(labelled) / valid, 0.95) << name;
   }
 }
