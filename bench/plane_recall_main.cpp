@@ -112,8 +112,8 @@ Options parse_options(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const kValued[] = {"--seeds", "--stride", "--presets", "--grid-steps",
-                                          "--set", "--presets-dir", "--csv", "--markdown", "--normal-errors", "--max-normal-error-ratio",
-                                          "--min-recall", "--min-precision"};
+                                          "--set", "--presets-dir", "--csv", "--markdown", "--normal-errors",
+                                          "--max-normal-error-ratio", "--min-recall", "--min-precision"};
     if (std::find(std::begin(kValued), std::end(kValued), arg) == std::end(kValued))
       throw UsageError(arg.rfind("-", 0) == 0 ? "unknown option '" + arg + "' (see --help)"
                                               : "unexpected argument '" + arg + "'");
@@ -128,7 +128,8 @@ Options parse_options(int argc, char** argv) {
     } else if (arg == "--presets") {
       o.presets = split_list(arg, value);
       for (const auto& p : o.presets)
-        if (p != "lab" && p != "field") throw UsageError("--presets: unknown preset '" + p + "' (expected lab or field)");
+        if (p != "lab" && p != "field")
+          throw UsageError("--presets: unknown preset '" + p + "' (expected lab or field)");
     } else if (arg == "--grid-steps") {
       o.grid_steps.clear();
       for (const auto& s : split_list(arg, value)) o.grid_steps.push_back(parse_int(arg, s, 1, 1000));
