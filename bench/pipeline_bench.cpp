@@ -94,6 +94,20 @@ void detection(benchmark::State& state, int grid_step) {
 void BM_Detection(benchmark::State& state) { detection(state, 0); }
 void BM_DetectionEveryPixel(benchmark::State& state) { detection(state, 1); }
 
+// Full detection with the cell order (grow.cell_px = 8): what it costs next to CAPE's plane
+// extraction alone (docs/performance.md).
+void BM_DetectionCells(benchmark::State& state) {
+  const auto& nf = bench_frames()[state.range(0)];
+  Parameters p;
+  p.set("grow.cell_px", 8);
+  Pipeline pipeline(p);
+  FrameResult result;
+  for (auto _ : state) pipeline.run(nf.frame, result, nullptr);
+  state.counters["detected"] = result.map.detected ? 1 : 0;
+  state.counters["planes"] = static_cast<double>(result.planes.planes.size());
+  state.SetLabel(nf.name);
+}
+
 }  // namespace
 
 BENCHMARK(BM_Cloud)->Apply(per_frame);
@@ -104,3 +118,4 @@ BENCHMARK(BM_PlaneExtractionNoEdgeOnPass)->Apply(per_frame);
 BENCHMARK(BM_PlaneExtractionEveryPixel)->Apply(per_frame);
 BENCHMARK(BM_Detection)->Apply(per_frame);
 BENCHMARK(BM_DetectionEveryPixel)->Apply(per_frame);
+BENCHMARK(BM_DetectionCells)->Apply(per_frame);

@@ -62,6 +62,17 @@ int print_timed_runs(int reps, int warmup, const std::string& methods) {
         return static_cast<int>(planes.planes.size());
       });
     }
+    if (wanted("tunnelmap-cells-detection")) {
+      // Full detection by cells: plane extraction and the tunnel template (Pipeline::run).
+      Parameters with_cells = p;
+      with_cells.set("grow.cell_px", 8);
+      const Pipeline pipeline(with_cells);
+      FrameResult result;
+      time_runs(nf.name, "tunnelmap-cells-detection", reps, warmup, [&] {
+        pipeline.run(nf.frame, result, nullptr);
+        return static_cast<int>(result.planes.planes.size());
+      });
+    }
     if (wanted("tunnelmap")) time_runs(nf.name, "tunnelmap", reps, warmup, extract);
     else extract();  // the PCL peer starts from this cloud
     // BM_OpenCvTotalWithCloud_FALS: depthTo3d + RgbdNormals + RgbdPlane (tuned settings).

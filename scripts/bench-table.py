@@ -16,6 +16,7 @@ PEERS = [
     ("TunnelMap plane extraction without the edge-on pass", "BM_PlaneExtractionNoEdgeOnPass"),
     ("TunnelMap every-pixel plane extraction (grid step 1)", "BM_PlaneExtractionEveryPixel"),
     ("TunnelMap every-pixel detection", "BM_DetectionEveryPixel"),
+    ("TunnelMap detection by cells (grow.cell_px=8)", "BM_DetectionCells"),
     ("PCL IINE + OMPS", "BM_PclTotal"),
     ("OpenCV FALS + RgbdPlane", "BM_OpenCvTotal_FALS"),
     ("OpenCV FALS + RgbdPlane incl. depthTo3d", "BM_OpenCvTotalWithCloud_FALS"),
