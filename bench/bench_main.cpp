@@ -22,7 +22,8 @@ int main(int argc, char** argv) {
   if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "--timed-runs") == 0) {
     const int reps = std::atoi(argv[2]);
     if (reps < 1) return 2;
-    return tunnelmap::bench::print_timed_runs(reps, 3, argc == 4 ? argv[3] : "tunnelmap,tunnelmap-cells,tunnelmap-cells-detection,opencv,pcl");
+    const char* all = "tunnelmap,tunnelmap-cells,tunnelmap-cells-detection,opencv,pcl";
+    return tunnelmap::bench::print_timed_runs(reps, 3, argc == 4 ? argv[3] : all);
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

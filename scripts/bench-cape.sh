@@ -59,8 +59,8 @@ out = [f"Measured {datetime.datetime.now(datetime.timezone.utc).isoformat(timesp
        f"scripts/bench-cape.sh, pinned to CPU {cpu} (taskset), load average {load}; median wall ms "
        f"of {rounds} alternating rounds x {reps} runs per frame and method (warm-up runs dropped); "
        "(N planes) in brackets.", "",
-       "| frame | TunnelMap plane extraction | TunnelMap cells (grow.cell_px=8) | CAPE | TunnelMap / CAPE | cells / CAPE | "
-       "cells detection / CAPE | OpenCV FALS + RgbdPlane incl. depthTo3d | PCL IINE + OMPS |",
+       "| frame | TunnelMap plane extraction | TunnelMap cells (grow.cell_px=8) | CAPE | TunnelMap / CAPE | "
+       "cells / CAPE | cells detection / CAPE | OpenCV FALS + RgbdPlane incl. depthTo3d | PCL IINE + OMPS |",
        "|---|---|---|---|---|---|---|---|---|"]
 for f in frames:
     tm, cells, cape = med(f, "tunnelmap"), med(f, "tunnelmap-cells"), med(f, "cape")
