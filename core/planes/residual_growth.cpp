@@ -31,6 +31,21 @@ constexpr double kMinCellIncidenceDeg = 60.0;  // and its cell's points as a who
 constexpr double kQuickIncidenceDeg = 60.0;
 constexpr double kMaxRegionIncidenceDeg = 70.0;  // a settled region facing the camera more than this is dropped
 constexpr double kMaxNoiseM = 0.004;
+// A sliver seen edge-on recedes from the camera: along the line of sight its points spread
+// over far more than the sensor's noise. The pixels beside a depth edge (a diaphragm's manhole
+// rim) lie at one depth, yet their 5 x 5 windows straddle the jump and look grazing; their
+// strip's plane turns freely about the strip (on the simulated rim, 76-80 degrees of incidence
+// in any direction), so it is no surface of its own.
+constexpr double kMinRecedingNoises = 3.0;
+
+bool recedes_from_the_camera(const PlaneModel& model, double noise_per_m2) {
+  const Eigen::Vector3d centroid = model.mean_point();
+  const double z2 = centroid.squaredNorm();
+  const Eigen::Vector3d sight = centroid / std::sqrt(z2);
+  const double spread2 = sight.dot(model.covariance() * sight);  // variance along the sight line
+  const double noise = kMinRecedingNoises * noise_per_m2 * z2;
+  return spread2 > noise * noise;
+}
 constexpr std::size_t kRefitFraction = 16;
 
 bool is_free(std::int32_t label) { return label == 0 || label == kTried; }
@@ -213,7 +228,7 @@ int grow_residual_slivers(const OrganizedCloud& cloud, const GrowOptions& option
       }
       for (const auto& [i, old] : rejected) labels[i] = old;
       rejected.clear();
-      bool keep = !facing && model.count() >= options.min_points;
+      bool keep = !facing && model.count() >= options.min_points && recedes_from_the_camera(model, noise_per_m2);
       if (keep) {
         if (kept == out.planes.size()) add_plane_slot(out.planes, pool);
         fill_segment_statistics(out.planes[kept], model, options, fxfy, normal);
