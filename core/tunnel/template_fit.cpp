@@ -18,6 +18,13 @@ void set_text(std::string& out, const char* f, double a, double b) {
   std::snprintf(buf, sizeof buf, f, a, b);
   out.assign(buf);
 }
+// A pair's weight: the sum of its seen walls' weights (1 each without weights).
+double pair_weight(const double weights[4], const bool seen[4], int first) {
+  double w = 0;
+  for (int k = first; k < first + 2; ++k)
+    if (seen[k]) w += weights ? weights[k] : 1.0;
+  return w;
+}
 }  // namespace
 
 TemplateFrame fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector3d& n_right,
@@ -43,7 +50,7 @@ void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector
 void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
                           const Eigen::Vector3d& rough_right, const Eigen::Vector3d& rough_up,
                           const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
-                          TemplateFrame& t) {
+                          TemplateFrame& t, const double weights[4]) {
   {  // Default values in every field, but the reason keeps its buffer.
     TemplateFrame fresh;
     fresh.reason.swap(t.reason);
@@ -66,10 +73,13 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
     return;
   // One direction per pair from the walls seen of it (inward normals: left faces right).
   const bool have_a = seen[0] || seen[1], have_b = seen[2] || seen[3];
-  Eigen::Vector3d a = (seen[0] ? means[0] : Eigen::Vector3d::Zero()) -
-                      (seen[1] ? means[1] : Eigen::Vector3d::Zero());
-  Eigen::Vector3d b = (seen[3] ? means[3] : Eigen::Vector3d::Zero()) -
-                      (seen[2] ? means[2] : Eigen::Vector3d::Zero());
+  // A far sliver of floor (a few hundred points through a manhole, its normal 1 degree off)
+  // must not tilt the axis as much as a roof of thousands of points does.
+  const auto term = [&](int k) -> Eigen::Vector3d {
+    return seen[k] ? Eigen::Vector3d((weights ? weights[k] : 1.0) * means[k]) : Eigen::Vector3d::Zero();
+  };
+  Eigen::Vector3d a = term(0) - term(1);
+  Eigen::Vector3d b = term(3) - term(2);
   if (have_a) a.normalize();
   if (have_b) b.normalize();
   if (have_a && have_b) {
@@ -80,10 +90,23 @@ void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
                max_pair_angle_deg);
       return;
     }
-    const Eigen::Vector3d s = (a + b).normalized();
-    const Eigen::Vector3d d = (a - b).normalized();
-    t.right = (s + d).normalized();
-    t.up = (s - d).normalized();
+    const double wa = pair_weight(weights, seen, 0), wb = pair_weight(weights, seen, 2);
+    if (wa == wb) {  // the bisector-symmetric frame
+      const Eigen::Vector3d s = (a + b).normalized();
+      const Eigen::Vector3d d = (a - b).normalized();
+      t.right = (s + d).normalized();
+      t.up = (s - d).normalized();
+    } else {
+      // Each direction turns by its share of the misfit from perpendicular, in proportion to
+      // the other pair's weight: a roof seen as a few rivet-studded strips must not turn "right",
+      // which two walls of 50,000 points fix.
+      const Eigen::Vector3d e2 = (b - a * a.dot(b)).normalized();
+      const double phi = std::atan2(b.dot(e2), b.dot(a));
+      const double turn_a = (0.5 * M_PI - phi) * wb / (wa + wb);
+      const double angle_b = phi + (0.5 * M_PI - phi) * wa / (wa + wb);
+      t.right = (std::cos(-turn_a) * a + std::sin(-turn_a) * e2).normalized();
+      t.up = (std::cos(angle_b) * a + std::sin(angle_b) * e2).normalized();
+    }
   } else if (have_a) {
     // The measured walls fix their own direction exactly; the other comes from "up".
     t.right = a;

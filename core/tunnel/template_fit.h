@@ -36,9 +36,13 @@ void fit_rectangular_template(const Eigen::Vector3d& n_left, const Eigen::Vector
 // measured; at least two walls must be. A pair with both walls seen must be antiparallel as
 // above; a direction no wall gives comes from the rough frame (`rough_right`, `rough_up`) made
 // perpendicular to the measured one. All four seen: the same as fit_rectangular_template.
+// `weights` (optional, > 0 for the walls seen): a pair's direction is the weighted mean of its
+// two walls' normals, as each wall's normal is the point-weighted mean of its planes' (with
+// none, the plain mean); with both pairs seen, each pair's direction gives way to make them
+// perpendicular in proportion to the other pair's weight (equal weights: half each).
 void fit_partial_template(const Eigen::Vector3d means[4], const bool seen[4],
                           const Eigen::Vector3d& rough_right, const Eigen::Vector3d& rough_up,
                           const Eigen::Vector3d& camera_forward, double max_pair_angle_deg,
-                          TemplateFrame& out);
+                          TemplateFrame& out, const double weights[4] = nullptr);
 
 }  // namespace tunnelmap

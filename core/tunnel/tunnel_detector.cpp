@@ -3,6 +3,7 @@
 #include "core/tunnel/tunnel_detector.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -87,6 +88,57 @@ void check_options(const TunnelOptions& o) {
       o.class_angle_deg > 45.0 || !(o.zone_cluster_m > 0) || !(o.max_pair_angle_deg > 0) ||
       !(o.forbidden_band_m >= 0) || !(o.max_symmetric_step_m >= 0))
     throw ParameterError("tunnel options out of range (angles and gaps must be > 0, class cone <= 45 deg)");
+}
+
+// A plate across the axis (a diaphragm): its plane and the box its outline covers in the image,
+// in normalised image coordinates (x/z, y/z).
+struct Plate {
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double offset = 0, x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  // `q` lies more than 0.1 m behind the plate, on a sight line through the plate's outline: a
+  // wall seen through the plate's manhole, in the next bay.
+  bool hides(const Eigen::Vector3d& q) const {
+    if (!(q.z() > 0) || normal.dot(q) + offset > -0.1) return false;
+    const double x = q.x() / q.z(), y = q.y() / q.z();
+    return x > x0 && x < x1 && y > y0 && y < y1;
+  }
+};
+constexpr int kMaxPlates = 4;
+
+// The largest plates across the axis: unclassified planes facing along it within the class
+// angle, with a zone's support and at least a quarter of the smallest cross-section the
+// template allows (a joint between two sections is a ring a few centimetres wide, seen past,
+// not through), with an outline. Returns how many (at most kMaxPlates).
+int plates_across(const PlaneSegments& planes, const TunnelMap& map, const Eigen::Vector3d& axis,
+                  const TunnelOptions& opt, std::array<Plate, kMaxPlates>& out) {
+  const double cos_class = std::cos(opt.class_angle_deg * M_PI / 180.0);
+  const double min_area = 0.25 * opt.width_min_m * opt.height_min_m;
+  std::array<double, kMaxPlates> area{};
+  int count = 0;
+  for (size_t i = 0; i < planes.planes.size(); ++i) {
+    const PlaneSegment& p = planes.planes[i];
+    if (map.plane_classes[i] != WallClass::Unassigned || p.edge_on || p.points < opt.min_cluster_points ||
+        p.area_m2 < min_area || p.contour.empty() || std::abs(p.normal.dot(axis)) < cos_class)
+      continue;
+    int k = kMaxPlates - 1;  // when full, the smallest gives way to a larger one
+    if (count < kMaxPlates) {
+      k = count++;
+    } else if (area[k] >= p.area_m2) {
+      continue;
+    }
+    for (; k > 0 && area[k - 1] < p.area_m2; --k) area[k] = area[k - 1], out[k] = out[k - 1];
+    Plate& plate = out[k];
+    area[k] = p.area_m2;
+    plate.normal = p.normal, plate.offset = p.offset_m;
+    plate.x0 = plate.y0 = std::numeric_limits<double>::infinity();
+    plate.x1 = plate.y1 = -plate.x0;
+    for (const auto& q : p.contour) {
+      if (!(q.z() > 0)) continue;
+      plate.x0 = std::min(plate.x0, q.x() / q.z()), plate.x1 = std::max(plate.x1, q.x() / q.z());
+      plate.y0 = std::min(plate.y0, q.y() / q.z()), plate.y1 = std::max(plate.y1, q.y() / q.z());
+    }
+  }
+  return count;
 }
 
 // Steps 1-2: classes, outliers and per-class mean normals. seen[c]: the class kept a plane.
@@ -227,7 +279,7 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   // Step 3: rectangular template.
   TemplateFrame& tf = scratch.frame;
   fit_partial_template(means, seen, rough.right, rough.up, rough.forward, opt.max_pair_angle_deg,
-                       tf);
+                       tf, support);
   if (!tf.ok) {
     map.detected = false;
     map.status = tf.status;
@@ -253,6 +305,8 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   std::vector<ZonePosition>& positions = scratch.positions;
   double axial_min = std::numeric_limits<double>::infinity();
   double axial_max = -axial_min;
+  std::array<Plate, kMaxPlates> plates;
+  const int plate_count = plates_across(planes, map, tf.axis, opt, plates);
   for (WallClass c : kWalls) {
     const int ci = static_cast<int>(c);
     Wall& w = map.wall(c);
@@ -266,6 +320,11 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
         axial_max = std::max(axial_max, tf.axis.dot(q));
         for (int k = 0; k < 4; ++k) span[k] = std::max(span[k], -template_normal[k].dot(q));
       };
+      // Behind a plate: the next bay, seen through its manhole (a sliver of floor 3 m away,
+      // whose position the frame's smallest angular error moves by centimetres).
+      bool hidden = false;
+      for (int k = 0; k < plate_count && !hidden; ++k) hidden = plates[k].hides(p.centroid);
+      if (hidden) continue;
       // Planes seen nearly edge-on (the edge-on pass of coarse-to-fine growing) measure no zone
       // and bound no extent: their normals are the noisiest and they straddle plates a few
       // millimetres apart. With them, field height sigma rose from 0.15 to 1.2 mm

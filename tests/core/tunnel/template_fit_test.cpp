@@ -115,5 +115,22 @@ TEST(TemplateFit, OnlyOnePairInViewTakesTheOtherDirectionFromTheRoughFrame) {
   EXPECT_NEAR(t.left_right_angle_deg, 4.0, 1e-9);
 }
 
+TEST(TemplateFit, APairFollowsItsBetterSupportedWall) {
+  // A roof of 30,000 points and a floor sliver of 700 points pitched 1.2 deg from it (about
+  // the camera's x axis): weighted by points, "up" stays within 0.05 deg of the roof; the plain
+  // mean of the two would split the difference (0.6 deg).
+  const Eigen::Vector3d bottom = rotated(kBottom, 1.2, kLeft);
+  const Eigen::Vector3d means[4] = {kLeft, kRight, kTop, bottom};
+  const bool seen[4] = {true, true, true, true};
+  const double weights[4] = {20000, 20000, 30000, 700};
+  TemplateFrame t;
+  fit_partial_template(means, seen, kLeft, kBottom, kForward, 3.0, t, weights);
+  ASSERT_TRUE(t.ok);
+  EXPECT_LT(angle_deg(t.up, -kTop), 0.05);
+  EXPECT_NEAR(angle_deg(t.right, kLeft), 0.0, 1e-9);
+  fit_partial_template(means, seen, kLeft, kBottom, kForward, 3.0, t);
+  EXPECT_NEAR(angle_deg(t.up, -kTop), 0.6, 1e-3);
+}
+
 }  // namespace
 }  // namespace tunnelmap
