@@ -29,6 +29,10 @@ inline constexpr ParameterKey<double> min_section_m{
 inline constexpr ParameterKey<int> min_station_points{
     "map.min_station_points", "points", 60, 5, 100000, 5, Stage::Map, "Station support",
     "Fewest wall points (over all frames) that measure a wall at one station"};
+inline constexpr ParameterKey<double> near_range_m{
+    "map.near_range_m", "m", 2.5, 0.0, 20.0, 0.1, Stage::Map, "Near range",
+    "A wall at a station seen within this distance of the camera by at least Station support points "
+    "is measured from those views alone; farther views fill in only where no near one does (0: all views)"};
 }  // namespace map_keys
 
 // Whole stations in `length_m` (at least one).
@@ -56,6 +60,8 @@ struct StationMapOptions {
   double max_symmetric_step_m = mm_to_m(tunnel_keys::symmetric_step_max_mm.default_value);
   // Fewest wall points a station needs to measure a wall.
   int min_support_points = map_keys::min_station_points.default_value;
+  // Views within this depth measure a station's wall where they have the support (0: all views).
+  double near_range_m = map_keys::near_range_m.default_value;
 };
 bool operator==(const StationMapOptions& a, const StationMapOptions& b);
 inline bool operator!=(const StationMapOptions& a, const StationMapOptions& b) { return !(a == b); }

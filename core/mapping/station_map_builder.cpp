@@ -78,7 +78,7 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
   const float inv_step = static_cast<float>(1.0 / options_.station_step_m);
   // (station, plane) -> sums; a plane has one wall.
   struct Sum {
-    double position = 0, own_position = 0;
+    double position = 0, own_position = 0, range = 0;
     int points = 0;
     int wall = 0;
   };
@@ -90,13 +90,14 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
     Sum& s = sums[(static_cast<long long>(station) << 20) ^ ws.plane];
     s.position += static_cast<double>(d[ws.wall].dot(p)) * ws.points;
     s.own_position += static_cast<double>(own[ws.wall].dot(p)) * ws.points;
+    s.range += static_cast<double>(ws.point.z()) * ws.points;
     s.points += ws.points;
     s.wall = ws.wall;
   }
   for (const auto& [key, s] : sums) {
     const int station = static_cast<int>(key >> 20);
     out[station].push_back(
-        {station, s.wall, frame, s.points, s.position / s.points, s.own_position / s.points});
+        {station, s.wall, frame, s.points, s.position / s.points, s.own_position / s.points, s.range / s.points});
   }
 }
 
@@ -125,9 +126,19 @@ std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pie
     std::sort(frames.begin(), frames.end());
     wp.frames = static_cast<int>(std::unique(frames.begin(), frames.end()) - frames.begin());
     for (int c = 0; c < 4; ++c) {
+      // Near views alone where they have the support: far planes (3-5 m) are noisier and may
+      // span a plate step (an edge band and its middle plate in one plane), whose positions lie
+      // between the two zones and would chain them into one cluster.
+      int near_points = 0;
+      for (const Piece& p : here)
+        if (p.wall == c && p.range_m <= options_.near_range_m) near_points += p.points;
+      const double max_range = near_points >= options_.min_support_points
+                                   ? options_.near_range_m
+                                   : std::numeric_limits<double>::infinity();
       positions.clear();
       for (const Piece& p : here)
-        if (p.wall == c) positions.push_back({own ? p.own_position_m : p.position_m, p.points});
+        if (p.wall == c && p.range_m <= max_range)
+          positions.push_back({own ? p.own_position_m : p.position_m, p.points});
       if (positions.empty()) continue;
       auto& cl = clusters[static_cast<std::size_t>(k - k0)][c];
       cluster_zone_positions(positions, options_.zone_gap_m, options_.min_support_points, cl);

@@ -48,6 +48,7 @@ class StationMapBuilder {
     int points;
     double position_m;
     double own_position_m;
+    double range_m;  // mean depth of its points in the frame's camera
   };
   struct WallProfile {  // per station, positions of the four walls (NaN: not measured)
     double wall_m[4];
