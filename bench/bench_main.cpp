@@ -4,8 +4,8 @@
 // `tunnelmap_bench --export-frames DIR` only writes the bench frames as depth PNGs (for peers
 // timed outside this binary, scripts/bench-cape.sh) and exits; `--timed-runs N` only prints N
 // raw wall times per frame and method (bench/timed_runs.h) and exits; `--timed-runs N tunnelmap`
-// times only the named methods (comma-separated: tunnelmap, tunnelmap-cells,
-// tunnelmap-cells-detection, opencv, pcl), e.g. for A/B runs.
+// times only the named methods (comma-separated: tunnelmap, tunnelmap-pixel-grid,
+// tunnelmap-detection, opencv, pcl), e.g. for A/B runs.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   if ((argc == 3 || argc == 4) && std::strcmp(argv[1], "--timed-runs") == 0) {
     const int reps = std::atoi(argv[2]);
     if (reps < 1) return 2;
-    const char* all = "tunnelmap,tunnelmap-cells,tunnelmap-cells-detection,opencv,pcl";
+    const char* all = "tunnelmap,tunnelmap-pixel-grid,tunnelmap-detection,opencv,pcl";
     return tunnelmap::bench::print_timed_runs(reps, 3, argc == 4 ? argv[3] : all);
   }
   benchmark::Initialize(&argc, argv);

@@ -40,41 +40,33 @@ int print_timed_runs(int reps, int warmup, const std::string& methods) {
   const CloudOptions co = cloud_options(p);
   const NormalOptions no = normal_options(p);
   const GrowOptions go = grow_options(p);
+  GrowOptions pixel_grid = go;  // the pixel grid on every other pixel (grow.cell_px = 0)
+  pixel_grid.cell_px = 0;
   for (const NamedFrame& nf : bench_frames()) {
-    // The paper's plane extraction from the depth image: cloud + normals + PG&C + areas +
-    // contours (BM_PlaneExtraction).
+    // The paper's plane extraction from the depth image: cloud + normals (only where the
+    // growing order reads them) + PG&C + areas + contours (BM_PlaneExtraction).
     OrganizedCloud cloud;
     PlaneSegments planes;
     FrameScratch scratch;  // reused across runs, as Pipeline::run does
-    const auto extract = [&] {
+    const auto extract = [&](const GrowOptions& g) {
       build_cloud(nf.frame, co, cloud, scratch.cloud);
-      estimate_normals(no, cloud, scratch.normals);
-      extract_planes(cloud, go, planes, scratch.planes);
+      if (needs_point_normals(g)) estimate_normals(no, cloud, scratch.normals);
+      extract_planes(cloud, g, planes, scratch.planes);
       return static_cast<int>(planes.planes.size());
     };
-    if (wanted("tunnelmap-cells")) {
-      // The cell-based growing order (grow.cell_px = 8): no per-pixel normals.
-      GrowOptions cells = go;
-      cells.cell_px = 8;
-      time_runs(nf.name, "tunnelmap-cells", reps, warmup, [&] {
-        build_cloud(nf.frame, co, cloud, scratch.cloud);
-        extract_planes(cloud, cells, planes, scratch.planes);
-        return static_cast<int>(planes.planes.size());
-      });
-    }
-    if (wanted("tunnelmap-cells-detection")) {
-      // Full detection by cells: plane extraction and the tunnel template (Pipeline::run).
-      Parameters with_cells = p;
-      with_cells.set("grow.cell_px", 8);
-      const Pipeline pipeline(with_cells);
+    if (wanted("tunnelmap-pixel-grid"))
+      time_runs(nf.name, "tunnelmap-pixel-grid", reps, warmup, [&] { return extract(pixel_grid); });
+    if (wanted("tunnelmap-detection")) {
+      // Full detection: plane extraction and the tunnel template (Pipeline::run).
+      const Pipeline pipeline(p);
       FrameResult result;
-      time_runs(nf.name, "tunnelmap-cells-detection", reps, warmup, [&] {
+      time_runs(nf.name, "tunnelmap-detection", reps, warmup, [&] {
         pipeline.run(nf.frame, result, nullptr);
         return static_cast<int>(result.planes.planes.size());
       });
     }
-    if (wanted("tunnelmap")) time_runs(nf.name, "tunnelmap", reps, warmup, extract);
-    else extract();  // the PCL peer starts from this cloud
+    if (wanted("tunnelmap")) time_runs(nf.name, "tunnelmap", reps, warmup, [&] { return extract(go); });
+    else extract(go);  // the PCL peer starts from this cloud
     // BM_OpenCvTotalWithCloud_FALS: depthTo3d + RgbdNormals + RgbdPlane (tuned settings).
     if (wanted("opencv")) {
       OpenCvPeer cv_peer(nf.frame, co, tuned_opencv_settings(CvNormalsMethod::Fals));

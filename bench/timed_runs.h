@@ -7,8 +7,8 @@
 
 namespace tunnelmap::bench {
 
-// Prints "RAW|frame|method|planes|ms ms ..." per frame and method (tunnelmap, tunnelmap-cells,
-// tunnelmap-cells-detection, opencv, pcl):
+// Prints "RAW|frame|method|planes|ms ms ..." per frame and method (tunnelmap, tunnelmap-pixel-grid,
+// tunnelmap-detection, opencv, pcl):
 // `reps` timed runs after `warmup` untimed ones; only the methods named in `methods`
 // (comma-separated).
 int print_timed_runs(int reps, int warmup, const std::string& methods);

@@ -3,8 +3,8 @@
 # CAPE's timing harness lives outside the project (../shared/peers/cape beside the checkout,
 # MIT, never copied here): it is built in BUILD_DIR/cape-peer. The bench frames are written as
 # depth PNGs (tunnelmap_bench --export-frames), then 3 rounds alternate, on one pinned core:
-# tunnelmap_bench --timed-runs 50 (TunnelMap's plane extraction, per pixel and by cells, full
-# detection by cells, OpenCV FALS + RgbdPlane incl. depthTo3d, PCL IINE + OMPS) and cape_bench
+# tunnelmap_bench --timed-runs 50 (TunnelMap's plane extraction by cells, the default, and on the
+# pixel grid, full detection, OpenCV FALS + RgbdPlane incl. depthTo3d, PCL IINE + OMPS) and cape_bench
 # (REPS=50) on each frame. Medians of the pooled 150 runs per frame and method go to
 # docs/performance.md between <!-- cape:begin --> and <!-- cape:end -->; raw output in out/cape/.
 # Usage: bash scripts/bench-cape.sh [BUILD_DIR [CPU [lock command...]]]
@@ -59,15 +59,15 @@ out = [f"Measured {datetime.datetime.now(datetime.timezone.utc).isoformat(timesp
        f"scripts/bench-cape.sh, pinned to CPU {cpu} (taskset), load average {load}; median wall ms "
        f"of {rounds} alternating rounds x {reps} runs per frame and method (warm-up runs dropped); "
        "(N planes) in brackets.", "",
-       "| frame | TunnelMap plane extraction | TunnelMap cells (grow.cell_px=8) | CAPE | TunnelMap / CAPE | "
-       "cells / CAPE | cells detection / CAPE | OpenCV FALS + RgbdPlane incl. depthTo3d | PCL IINE + OMPS |",
-       "|---|---|---|---|---|---|---|---|---|"]
+       "| frame | TunnelMap plane extraction | CAPE | TunnelMap / CAPE | TunnelMap detection, / CAPE | "
+       "pixel grid (grow.cell_px=0), / CAPE | OpenCV FALS + RgbdPlane incl. depthTo3d | PCL IINE + OMPS |",
+       "|---|---|---|---|---|---|---|---|"]
 for f in frames:
-    tm, cells, cape = med(f, "tunnelmap"), med(f, "tunnelmap-cells"), med(f, "cape")
-    detection = med(f, "tunnelmap-cells-detection")
-    out.append(f"| {f} | {tm:.2f} ({planes[(f, 'tunnelmap')]}) | {cells:.2f} ({planes[(f, 'tunnelmap-cells')]}) | "
-               f"{cape:.2f} ({planes[(f, 'cape')]}) | {tm / cape:.2f}× | {cells / cape:.2f}× | "
-               f"{detection:.2f} ms, {detection / cape:.2f}× | "
+    tm, grid, cape = med(f, "tunnelmap"), med(f, "tunnelmap-pixel-grid"), med(f, "cape")
+    detection = med(f, "tunnelmap-detection")
+    out.append(f"| {f} | {tm:.2f} ({planes[(f, 'tunnelmap')]}) | {cape:.2f} ({planes[(f, 'cape')]}) | "
+               f"{tm / cape:.2f}× | {detection:.2f} ms, {detection / cape:.2f}× | "
+               f"{grid:.2f} ({planes[(f, 'tunnelmap-pixel-grid')]}), {grid / cape:.2f}× | "
                f"{med(f, 'opencv'):.2f} ({planes[(f, 'opencv')]}) | "
                f"{med(f, 'pcl'):.2f} ({planes[(f, 'pcl')]}) |")
 table = "\n".join(out) + "\n"

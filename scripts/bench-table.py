@@ -11,12 +11,13 @@ from collections import OrderedDict
 
 # (column title, benchmark family) for the peer table; the first is the reference.
 PEERS = [
-    ("TunnelMap plane extraction (default, grid step 2)", "BM_PlaneExtraction"),
+    ("TunnelMap plane extraction (default, 8 px cells)", "BM_PlaneExtraction"),
     ("TunnelMap detection (default)", "BM_Detection"),
     ("TunnelMap plane extraction without the edge-on pass", "BM_PlaneExtractionNoEdgeOnPass"),
+    ("TunnelMap pixel-grid plane extraction (grow.cell_px=0)", "BM_PlaneExtractionPixelGrid"),
+    ("TunnelMap pixel-grid detection", "BM_DetectionPixelGrid"),
     ("TunnelMap every-pixel plane extraction (grid step 1)", "BM_PlaneExtractionEveryPixel"),
     ("TunnelMap every-pixel detection", "BM_DetectionEveryPixel"),
-    ("TunnelMap detection by cells (grow.cell_px=8)", "BM_DetectionCells"),
     ("PCL IINE + OMPS", "BM_PclTotal"),
     ("OpenCV FALS + RgbdPlane", "BM_OpenCvTotal_FALS"),
     ("OpenCV FALS + RgbdPlane incl. depthTo3d", "BM_OpenCvTotalWithCloud_FALS"),

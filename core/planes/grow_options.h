@@ -39,7 +39,7 @@ inline constexpr ParameterKey<bool> edge_on_pass{
     "the candidate distance (surfaces seen nearly edge-on, e.g. wall edge bands down the tunnel); with "
     "cells: 1 grows single pixels from the unlabelled cells where a 5x5 window is seen edge-on; 0: off"};
 inline constexpr ParameterKey<int> cell_px{
-    "grow.cell_px", "px", 0, 0, 32, 1, Stage::Planes, "Growing cell size",
+    "grow.cell_px", "px", 8, 0, 32, 1, Stage::Planes, "Growing cell size",
     "0: grow on the pixel grid (grid step); k >= 4: grow over k x k pixel cells joined by the eq. 2 "
     "tests on their least-squares planes, then assign the pixels of cells at plane borders one by one "
     "(no per-pixel normals needed)"};

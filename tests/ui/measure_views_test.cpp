@@ -376,8 +376,10 @@ class MapReviewTest : public QObject {
     QVERIFY(m.stations.size() > 20);
     QCOMPARE(m.sections.size(), std::size_t{2});
 
-    // A measured station of the first section, then one of the second.
-    for (double want : {1.0, 3.0}) {
+    // A measured station of the first section, then one well inside the second: the frame
+    // shown for a station just past the joint is one from before it, whose own walls (the cut's
+    // fitted box) are those of the first section.
+    for (double want : {1.0, 4.2}) {
       const tunnelmap::Station* st = nullptr;
       for (const auto& s : m.stations)
         if (s.width_source == tunnelmap::DimensionSource::Measured && (!st || std::abs(s.station_m - want) < std::abs(st->station_m - want)))

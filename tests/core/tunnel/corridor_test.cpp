@@ -109,9 +109,12 @@ TEST(CorridorPreset, SimulatedCorridor4mWideEveryFrameWithin30mmWhereTheDefaults
   IoTempDir tmp;
   const std::string dir = simulate_corridor(tmp, 4.0);
   expect_every_frame_measured(detect(dir + kCorridor), 4.0);
-  // The defaults' 40 mm candidate distance breaks the walls 3.6-5 m ahead into small planes with
-  // scattered normals: left and right come out 13-16 deg from parallel.
-  for (const FrameOutcome& f : detect(dir)) EXPECT_EQ(f.status, TunnelStatus::NoParallelPair) << f.reason;
+  // The defaults find both walls (3.984 m) and refuse them by their 3 m template prior.
+  for (const FrameOutcome& f : detect(dir)) EXPECT_EQ(f.status, TunnelStatus::OutOfTemplate) << f.reason;
+  // On the pixel grid the defaults' 40 mm candidate distance breaks the walls 3.6-5 m ahead into
+  // small planes with scattered normals: left and right come out 13-16 deg from parallel.
+  for (const FrameOutcome& f : detect(dir + " --set grow.cell_px=0"))
+    EXPECT_EQ(f.status, TunnelStatus::NoParallelPair) << f.reason;
   expect_box_girder_presets_refuse(dir);
 }
 
@@ -133,15 +136,17 @@ SimConfig five_metre_corridor() {
   return c;
 }
 
-// Single frames (no station map): with the zone support and gap scaled each far wall is one zone;
-// with both fixed its noisy fragments are zones of their own and the outermost fragment bounds
-// the wall.
+// Single frames (no station map) on the pixel grid, which breaks each far wall into noisy
+// fragments: with the zone support and gap scaled each far wall is one zone; with both fixed the
+// fragments are zones of their own and the outermost fragment bounds the wall. (The cell order
+// keeps each far wall whole, so both settings measure it: CellOrderKeepsTheFarWallsOfA5mCorridorWhole.)
 TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
   const SimConfig c = five_metre_corridor();
   const TunnelSimulator sim(c);
 
   Parameters scaled;
   scaled.load_json_file(kPresets + "corridor.json");
+  scaled.set("grow.cell_px", 0);
   Parameters fixed = scaled;
   fixed.set("tunnel.zone_support_ref_m", 0.0);
   fixed.set("tunnel.zone_gap_ref_m", 0.0);
@@ -174,8 +179,8 @@ TEST(CorridorPreset, ScaledZonesSteadyTheFarWallsOfA5mCorridor) {
   EXPECT_GT(mean_fixed, 0.008);
 }
 
-// The cell order (grow.cell_px = 8) on the same far walls: each a plane or two, parallel, every
-// frame measured. Measured: 4.984-4.985 m (the surface between the middle plates: 4.984 m), 4-5
+// The cell order (grow.cell_px = 8, the default) on the same far walls: each a plane or two,
+// parallel, every frame measured. Measured: 4.984-4.985 m (the surface between the middle plates: 4.984 m), 4-5
 // planes per frame. With epsilon as the noisy cells' only distance bound the walls broke into
 // 12 planes each and 3 of the 6 frames found no parallel pair (15-17 degrees).
 TEST(CorridorPreset, CellOrderKeepsTheFarWallsOfA5mCorridorWhole) {
@@ -226,8 +231,13 @@ std::string real(const RealFrame& f) {
 }
 
 TEST(CorridorPreset, RealFramesGiveAPlausibleMapOrOneReason) {
-  // Cape: a vaulted pedestrian tunnel seen as its left wall and floor only.
+  // Cape: a vaulted pedestrian tunnel. Its curved wall's bands make no rectangle: the pairs
+  // come out 16 deg from perpendicular (on the pixel grid only its left wall and floor).
   auto f = detect(real(kCape) + kCorridor);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].status, TunnelStatus::NotRectangular);
+  EXPECT_EQ(f[0].reason.rfind("wall pairs are ", 0), 0u) << f[0].reason;
+  f = detect(real(kCape) + kCorridor + " --set grow.cell_px=0");
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(f[0].status, TunnelStatus::MissingWall);
   EXPECT_EQ(f[0].reason, "neither the width nor the height was measured (walls seen: left bottom)");
@@ -239,8 +249,15 @@ TEST(CorridorPreset, RealFramesGiveAPlausibleMapOrOneReason) {
   EXPECT_EQ(f[0].status, TunnelStatus::Ok) << f[0].reason;
   EXPECT_NEAR(f[0].width_m, 3.28, 0.10);
   EXPECT_NEAR(f[0].height_m, 2.15, 0.10);
-  // RTAB-Map lab: a wall facing the camera, the floor and a side wall.
+  // RTAB-Map lab: a wall facing the camera, the floor and a side wall; the cells also find a
+  // ceiling-like face 1.02 m above the floor (a partial map without its width), the pixel grid
+  // neither dimension.
   f = detect(real(kRtabmap) + kCorridor);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].status, TunnelStatus::Partial);
+  EXPECT_TRUE(std::isnan(f[0].width_m));
+  EXPECT_NEAR(f[0].height_m, 1.02, 0.05);
+  f = detect(real(kRtabmap) + kCorridor + " --set grow.cell_px=0");
   ASSERT_EQ(f.size(), 1u);
   EXPECT_EQ(f[0].status, TunnelStatus::MissingWall);
   EXPECT_EQ(f[0].reason.rfind("neither the width nor the height was measured", 0), 0u) << f[0].reason;
