@@ -235,6 +235,17 @@ bool is_seam(const GrownRegion& region, long count, const CellGrid& grid, double
   return 4 * second >= count && static_cast<double>(first + second) >= kSeamShare * static_cast<double>(count);
 }
 
+// A plane that (nearly) contains the camera's centre is no surface: pixels smeared along their
+// rays across a depth edge (flying pixels, between a diaphragm's manhole rim and the wall behind
+// it) line up into such planes, within 0.3-0.8 degrees of edge-on. A surface seen that close to
+// edge-on gives the sensor no depth to measure.
+constexpr double kMinSightlineDeg = 1.5;
+
+bool contains_the_sightlines(const PlaneSegment& plane) {
+  const double distance = plane.centroid.norm();
+  return std::abs(plane.offset_m) < std::sin(kMinSightlineDeg * M_PI / 180.0) * distance;
+}
+
 // The tilt (radians) that depth noise along the rays gives the least-squares normal `n` of the
 // points in `m` (errors in variables, disparity_fit.h): the noise adds sigma_z^2 q q^T (q = p/z,
 // sigma_z = c z^2) to the points' covariance C, which turns n by C^-1 of that term's in-plane
@@ -263,17 +274,6 @@ double predicted_depth_noise_tilt(const PlaneModel& m, const Eigen::Vector3d& n,
 // 0.1-0.3 ms on the real frames (their rows miss the cache), spent only where the tilt is
 // predicted: below 1e-3 rad, the fitted normal stands.
 constexpr double kMaxNoiseTilt = 1e-3;  // radians
-
-// A plane that (nearly) contains the camera's centre is no surface: pixels smeared along their
-// rays across a depth edge (flying pixels, between a diaphragm's manhole rim and the wall behind
-// it) line up into such planes, within 0.3-0.8 degrees of edge-on. A surface seen that close to
-// edge-on gives the sensor no depth to measure.
-constexpr double kMinSightlineDeg = 1.5;
-
-bool contains_the_sightlines(const PlaneSegment& plane) {
-  const double distance = plane.centroid.norm();
-  return std::abs(plane.offset_m) < std::sin(kMinSightlineDeg * M_PI / 180.0) * distance;
-}
 
 Eigen::Vector3d reported_normal(const OrganizedCloud& cloud, const CellGrid& grid, const std::vector<std::int32_t>& cells,
                                 const PlaneModel& model, const Eigen::Vector3d& least_squares) {

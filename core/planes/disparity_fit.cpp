@@ -17,7 +17,6 @@ void DisparityMoments::add_cell(const double s[kDisparitySums], double count, in
   xy += s[kSumUV] * ix * iy + ax * sy + ay * sx + ax * ay * count;
   yy += s[kSumVV] * iy * iy + 2 * ay * sy + ay * ay * count;
   xw += s[kSumUW] * ix + ax * sw, yw += s[kSumVW] * iy + ay * sw;
-  ww += s[kSumWW];
 }
 
 bool DisparityMoments::plane(Eigen::Vector3d& normal, double& d) const {
@@ -41,24 +40,6 @@ bool DisparityMoments::plane(Eigen::Vector3d& normal, double& d) const {
   return true;
 }
 
-double DisparityMoments::explained_share() const {
-  if (n < 3) return 0.0;
-  const double mx = x / n, my = y / n, mw = w / n;
-  const double sxx = xx - x * mx, sxy = xy - x * my, syy = yy - y * my;
-  const double sxw = xw - x * mw, syw = yw - y * mw, sww = ww - w * mw;
-  const double det = sxx * syy - sxy * sxy;
-  if (!(det > 1e-9 * (sxx + syy) * (sxx + syy)) || !(sww > 0)) return 0.0;
-  const double a = (sxw * syy - syw * sxy) / det, b = (syw * sxx - sxw * sxy) / det;
-  // The regression's sum of squares over the total: (a sxw + b syw) / sww.
-  return std::clamp((a * sxw + b * syw) / sww, 0.0, 1.0);
-}
-
-double DisparityMoments::residual_rms() const {
-  if (n < 3) return 0.0;
-  const double mw = w / n, sww = std::max(0.0, ww - w * mw);
-  return std::sqrt((1.0 - explained_share()) * sww / n);
-}
-
 void add_cell_points(const OrganizedCloud& cloud, const CellGrid& grid, const std::vector<std::int32_t>& cells,
                      DisparityMoments& m) {
   const int c = grid.cell_px;
@@ -66,7 +47,7 @@ void add_cell_points(const OrganizedCloud& cloud, const CellGrid& grid, const st
     const int u0 = (cell % grid.cols) * c, v0 = (cell / grid.cols) * c;
     const int u1 = std::min(u0 + c, cloud.width), v1 = std::min(v0 + c, cloud.height);
     // In float about the cell's corner (a cell's sums are small), in pixel units.
-    float n = 0, s[kDisparitySums] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    float n = 0, s[kDisparitySums] = {0, 0, 0, 0, 0, 0, 0, 0};
     for (int v = v0; v < v1; ++v) {
       const Eigen::Vector3f* row = cloud.points.data() + cloud.index(0, v);
       const float dv = static_cast<float>(v - v0);
@@ -76,10 +57,10 @@ void add_cell_points(const OrganizedCloud& cloud, const CellGrid& grid, const st
         const float w = 1.0f / z, du = static_cast<float>(u - u0);
         n += 1;
         s[kSumU] += du, s[kSumV] += dv, s[kSumUU] += du * du, s[kSumUV] += du * dv, s[kSumVV] += dv * dv;
-        s[kSumW] += w, s[kSumUW] += du * w, s[kSumVW] += dv * w, s[kSumWW] += w * w;
+        s[kSumW] += w, s[kSumUW] += du * w, s[kSumVW] += dv * w;
       }
     }
-    const double sums[kDisparitySums] = {s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8]};
+    const double sums[kDisparitySums] = {s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7]};
     m.add_cell(sums, n, u0, v0, cloud.intrinsics);
   }
 }

@@ -18,24 +18,17 @@
 namespace tunnelmap {
 
 // Sums over a cell's valid pixels about its corner (u0, v0): du = u - u0, dv = v - v0, w = 1/z.
-enum DisparitySum : int { kSumU, kSumV, kSumUU, kSumUV, kSumVV, kSumW, kSumUW, kSumVW, kSumWW, kDisparitySums };
+enum DisparitySum : int { kSumU, kSumV, kSumUU, kSumUV, kSumVV, kSumW, kSumUW, kSumVW, kDisparitySums };
 
 // Sums over points for the disparity-space fit, in normalised image coordinates.
 struct DisparityMoments {
-  double n = 0, x = 0, y = 0, w = 0, xx = 0, xy = 0, yy = 0, xw = 0, yw = 0, ww = 0;
+  double n = 0, x = 0, y = 0, w = 0, xx = 0, xy = 0, yy = 0, xw = 0, yw = 0;
 
   // Adds a cell's `count` pixels with corner (u0, v0) and sums `s` (DisparitySum).
   void add_cell(const double s[kDisparitySums], double count, int u0, int v0, const Intrinsics& k);
   // The plane n.p + d = 0 (n unit, facing the camera: d > 0); false when the points do not
   // span two directions of the image (a line of pixels) or the plane passes through the camera.
   bool plane(Eigen::Vector3d& normal, double& d) const;
-  // The share of the points' variance of 1/z that the plane explains (R squared, 0-1; 0 when
-  // there is no plane). A surface gives nearly 1 wherever its depth varies across it; pixels
-  // smeared along their rays across a depth edge (flying pixels), whose "plane" contains the
-  // camera, leave 1/z unexplained by the image position.
-  double explained_share() const;
-  // RMS of 1/z about the plane (1/m); with sigma_z = c z^2, a surface leaves about c.
-  double residual_rms() const;
 };
 
 // Adds the valid points of the given cells of `grid` (cells of grid.cell_px pixels).

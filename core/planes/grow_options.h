@@ -30,9 +30,9 @@ inline constexpr ParameterKey<bool> refit_normal{
     "1: report each plane's least-squares normal from its points; 0: the grown mean normal (eq. 3)"};
 inline constexpr ParameterKey<int> grid_step{
     "grow.grid_step", "px", 2, 1, 4, 1, Stage::Planes, "Growing grid step",
-    "1: grow over every pixel exactly as the paper; k > 1 (default 2, 2-3x faster, same accuracy): grow "
-    "on every k-th pixel and row, then assign each remaining pixel to a neighbouring sample's plane by "
-    "the same distance and angle tests"};
+    "With cell size 0: 1 grows over every pixel exactly as the paper; k > 1 (default 2, 2-3x faster, same "
+    "accuracy): grow on every k-th pixel and row, then assign each remaining pixel to a neighbouring "
+    "sample's plane by the same distance and angle tests"};
 inline constexpr ParameterKey<bool> edge_on_pass{
     "grow.edge_on_pass", "", true, 0, 1, 1, Stage::Planes, "Edge-on pass",
     "With grid step > 1: 1 grows every pixel from the unlabelled pixels where grid neighbours lie beyond "
@@ -40,9 +40,9 @@ inline constexpr ParameterKey<bool> edge_on_pass{
     "cells: 1 grows single pixels from the unlabelled cells where a 5x5 window is seen edge-on; 0: off"};
 inline constexpr ParameterKey<int> cell_px{
     "grow.cell_px", "px", 8, 0, 32, 1, Stage::Planes, "Growing cell size",
-    "0: grow on the pixel grid (grid step); k >= 4: grow over k x k pixel cells joined by the eq. 2 "
-    "tests on their least-squares planes, then assign the pixels of cells at plane borders one by one "
-    "(no per-pixel normals needed)"};
+    "k >= 4 (default 8): grow over k x k pixel cells joined by the eq. 2 tests on their least-squares "
+    "planes, then assign the pixels of cells at plane borders one by one (no per-pixel normals, 4-7x "
+    "faster); 0: grow on the pixel grid (grid step) with integral-image normals"};
 }  // namespace grow_keys
 
 struct GrowOptions {
