@@ -31,6 +31,8 @@ constexpr double kMinCellIncidenceDeg = 60.0;  // and its cell's points as a who
 constexpr double kQuickIncidenceDeg = 60.0;
 constexpr double kMaxRegionIncidenceDeg = 70.0;  // a settled region facing the camera more than this is dropped
 constexpr double kMaxNoiseM = 0.004;
+constexpr std::size_t kRefitFraction = 16;
+
 // A sliver seen edge-on recedes from the camera: along the line of sight its points spread
 // over far more than the sensor's noise. The pixels beside a depth edge (a diaphragm's manhole
 // rim) lie at one depth, yet their 5 x 5 windows straddle the jump and look grazing; their
@@ -46,7 +48,6 @@ bool recedes_from_the_camera(const PlaneModel& model, double noise_per_m2) {
   const double noise = kMinRecedingNoises * noise_per_m2 * z2;
   return spread2 > noise * noise;
 }
-constexpr std::size_t kRefitFraction = 16;
 
 bool is_free(std::int32_t label) { return label == 0 || label == kTried; }
 
