@@ -7,7 +7,7 @@ PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config git
   qtbase5-dev libqt5opengl5-dev
   libvtk9-dev libvtk9-qt-dev
-  libpcl-dev libeigen3-dev libqhull-dev
+  libpcl-dev libeigen3-dev libqhull-dev libceres-dev
   libopencv-dev libopencv-contrib-dev
   libopenni2-dev openni2-utils
   libosmesa6-dev

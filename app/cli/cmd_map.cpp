@@ -21,6 +21,7 @@
 #include "core/kinematics/robot_json.h"
 #include "core/mapping/dataset_mapping.h"
 #include "core/mapping/station_map_builder.h"
+#include "core/report/girder_json.h"
 #include "core/report/results_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
@@ -38,7 +39,7 @@ struct MapOptions {
   InputOptions in;
   std::optional<double> station_step, tolerance_mm;
   std::string design;  // "WxH"
-  std::string json_path, csv_path, ply_path, report_path;
+  std::string json_path, csv_path, ply_path, report_path, diaphragms_csv_path;
   bool no_pose_refinement = false;
   bool quiet = false;
 };
@@ -167,7 +168,7 @@ void run(const MapOptions& o, CliContext& ctx) {
   if (!o.report_path.empty())
     throw ParameterError("--report needs the Qt build of tunnelmap (configure with -DTUNNELMAP_BUILD_GUI=ON)");
 #endif
-  for (const std::string& p : {o.json_path, o.csv_path, o.ply_path, o.report_path})
+  for (const std::string& p : {o.json_path, o.csv_path, o.ply_path, o.report_path, o.diaphragms_csv_path})
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
   Progress progress(ds.frames.size());
   DatasetMapping dm = map_dataset(ds, pipeline, !o.no_pose_refinement,
@@ -198,6 +199,8 @@ void run(const MapOptions& o, CliContext& ctx) {
     });
   if (!o.csv_path.empty())
     write_file_atomically(o.csv_path, [&](std::ostream& out) { out << station_map_csv(m); });
+  if (!o.diaphragms_csv_path.empty())
+    write_file_atomically(o.diaphragms_csv_path, [&](std::ostream& out) { out << diaphragms_csv(m.girder); });
   if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj);
 #ifdef TUNNELMAP_HAVE_REPORT
   if (!o.report_path.empty()) write_report(o, m, pj);
@@ -220,6 +223,8 @@ void add_map_command(CLI::App& app, CliContext& ctx) {
                   "Allowed deviation from the design in mm (default 10; map.tolerance_mm)");
   cmd->add_option("--json", o->json_path, "Write the station map as JSON");
   cmd->add_option("--csv", o->csv_path, "Write one row per station as CSV");
+  cmd->add_option("--diaphragms-csv", o->diaphragms_csv_path,
+                  "Write one row per diaphragm (station, normal, manhole size, shape, clearances) as CSV");
   cmd->add_option("--ply", o->ply_path, "Write the sectioned map as a binary PLY mesh (world frame)");
   cmd->add_option("--report", o->report_path, "Write the inspection report as PDF");
   cmd->add_flag("--no-pose-refinement", o->no_pose_refinement,

@@ -1,4 +1,6 @@
 // `tunnelmap-cli simulate OUT_DIR`: writes a simulated tunnel dataset (core/sim).
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -22,11 +24,15 @@ struct SimulateOptions {
   std::optional<int> frames;
   std::optional<long long> seed;
   std::string rgb_format = "png";
+  std::string noise_model;  // empty = the preset's (structured_light)
   std::string format = "dataset";  // output layout: dataset (dataset.json) or tum (TUM RGB-D)
   std::string arm;                 // robot preset: joints instead of poses
   std::optional<double> sag;       // arm link sag, deg per metre of reach
   std::optional<std::string> sections, diaphragms, walk, walk_pose;  // lists, parsed in run()
   std::optional<double> sections_start;
+  std::optional<std::string> drift;  // MM,DEG per sqrt(m)
+  std::optional<double> girder, diaphragm_spacing, curve_radius, gradient_pct, cross_fall_deg;
+  std::optional<std::string> manhole;  // SHAPE,W,H,CENTRE_Z_REL[,CORNER_R]
   bool quiet = false;
 };
 
@@ -75,7 +81,73 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
     c.diaphragm_x_m = parse_sim_numbers("--diaphragms", *o.diaphragms);
     for (double x : c.diaphragm_x_m) check("--diaphragms", "position", x, -1000.0, 1000.0);
   }
-  if (o.walk_pose && !o.walk) refuse("--walk-pose needs --walk");
+  if (o.girder) {
+    check("--girder", o.girder, 1.0, 1000.0);
+    if (o.distance) refuse("--distance-to-manhole does not apply with --girder (its plates are the diaphragms)");
+    c.girder_length_m = *o.girder;
+    c.manhole_distances_m.clear();  // the field preset's plate: a girder has its diaphragms
+    c.distance_to_manhole_m.reset();
+  }
+  if (o.diaphragm_spacing) {
+    if (!o.girder) refuse("--diaphragm-spacing needs --girder");
+    check("--diaphragm-spacing", o.diaphragm_spacing, 0.5, 100.0);
+    c.diaphragm_spacing_m = *o.diaphragm_spacing;
+  }
+  if (o.manhole) {
+    const std::string& text = *o.manhole;
+    const auto comma = text.find(',');
+    const std::string shape = text.substr(0, comma);
+    if (shape != "ellipse" && shape != "rounded_rectangle")
+      refuse("--manhole: shape '" + shape + "' is not ellipse or rounded_rectangle");
+    if (comma == std::string::npos)
+      refuse("--manhole: expected SHAPE,W,H,CENTRE_Z_REL[,CORNER_R], got '" + text + "'");
+    std::vector<double> v = parse_sim_numbers("--manhole", text.substr(comma + 1), 0,
+                                              "SHAPE,W,H,CENTRE_Z_REL[,CORNER_R]");
+    if (v.size() != 3 && v.size() != 4)
+      refuse("--manhole: expected SHAPE,W,H,CENTRE_Z_REL[,CORNER_R], got '" + text + "'");
+    check("--manhole", "W", v[0], 0.05, 5.0);
+    check("--manhole", "H", v[1], 0.05, 5.0);
+    check("--manhole", "CENTRE_Z_REL", v[2], 0.0, 1.0);
+    c.manhole_shape = shape;
+    c.manhole_width_m = v[0];
+    c.manhole_height_m = v[1];
+    c.manhole_centre_z_rel = v[2];
+    if (v.size() == 4) {
+      if (shape != "rounded_rectangle") refuse("--manhole: CORNER_R needs rounded_rectangle");
+      check("--manhole", "CORNER_R", v[3], 0.0, 0.5 * std::min(v[0], v[1]));
+      c.manhole_corner_radius_m = v[3];
+    }
+  }
+  check("--gradient-pct", o.gradient_pct, -10.0, 10.0);
+  check("--cross-fall-deg", o.cross_fall_deg, -10.0, 10.0);
+  if (o.curve_radius && *o.curve_radius != 0.0 &&
+      !(std::abs(*o.curve_radius) >= 50.0 && std::abs(*o.curve_radius) <= 1e6))
+    refuse("--curve-radius " + std::to_string(*o.curve_radius) +
+           " must be 0 (straight) or between 50 and 1000000 m in size (sign: + left, - right)");
+  if (o.curve_radius) c.curve_radius_m = *o.curve_radius;
+  if (o.gradient_pct) c.gradient_pct = *o.gradient_pct;
+  if (o.cross_fall_deg) c.cross_fall_deg = *o.cross_fall_deg;
+  if (o.walk_pose && !o.walk && !o.girder) refuse("--walk-pose needs --walk");
+  if (!o.walk && o.girder) {
+    // The whole girder, one stop per frame, through every manhole.
+    SimWalk w;
+    w.start_x_m = std::min(0.5, 0.5 * *o.girder);
+    w.end_x_m = std::max(w.start_x_m, *o.girder - 0.5);
+    w.stops = c.frames;
+    w.pose = SimCameraPose{0.0, 0.5, 0.0, 0.0, 0.0};
+    w.through_openings = true;
+    c.walk = w;
+  }
+  if (o.walk_pose && !o.walk) {
+    const std::vector<double> p =
+        parse_sim_numbers("--walk-pose", *o.walk_pose, 3, "Y_REL,Z_REL,PITCH_DEG");
+    check("--walk-pose", "Y_REL", p[0], -0.5, 0.5);
+    check("--walk-pose", "Z_REL", p[1], 0.0, 1.0);
+    check("--walk-pose", "PITCH_DEG", p[2], -60.0, 60.0);
+    c.walk->pose.y_rel = p[0];
+    c.walk->pose.z_rel = p[1];
+    c.walk->pose.pitch_deg = p[2];
+  }
   if (o.walk) {
     SimWalk w = parse_sim_walk("--walk", *o.walk);
     check("--walk", "FROM", w.start_x_m, -1000.0, 1000.0);
@@ -94,6 +166,7 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
       w.pose.z_rel = p[1];
       w.pose.pitch_deg = p[2];
     }
+    w.through_openings = o.girder.has_value();
     c.walk = w;
   }
 }
@@ -124,6 +197,14 @@ void run(const SimulateOptions& o, CliContext& ctx) {
   if (!o.arm.empty()) c.arm_preset = o.arm;
   check("--sag", o.sag, 0.0, 10.0);
   if (o.sag) c.arm_sag_deg_per_m = *o.sag;
+  if (!o.noise_model.empty()) c.noise_model = o.noise_model;
+  if (o.drift) {
+    const std::vector<double> d = parse_sim_numbers("--drift", *o.drift, 2, "MM,DEG");
+    check("--drift", "MM", d[0], 0.0, 100.0);
+    check("--drift", "DEG", d[1], 0.0, 5.0);
+    c.drift_translation_mm_per_sqrt_m = d[0];
+    c.drift_rotation_deg_per_sqrt_m = d[1];
+  }
   apply_layout(o, c);
   c.validate();  // combinations (e.g. manhole opening vs. a small width)
 
@@ -181,6 +262,28 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
   sub->add_option("--walk-pose", opt->walk_pose,
                   "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
+  sub->add_option("--drift", opt->drift,
+                  "Odometry drift MM,DEG: random walk of MM millimetres and DEG degrees per "
+                  "sqrt(metre) travelled, per axis; \"pose\" drifts, \"pose_true\" is the truth");
+  sub->add_option("--noise-model", opt->noise_model,
+                  "Depth noise: structured_light (default: disparity quantisation, error ~ z^2) or "
+                  "tof (error linear in z, flying pixels at depth edges)")
+      ->check(CLI::IsMember({"structured_light", "tof"}));
+  sub->add_option("--girder", opt->girder,
+                  "A whole girder of this length (metres): start wall at 0, end wall at L; "
+                  "without --walk, one stop per frame from 0.5 to L-0.5 through the manholes");
+  sub->add_option("--diaphragm-spacing", opt->diaphragm_spacing,
+                  "With --girder: diaphragms every S metres (at S, 2S, ... short of L)");
+  sub->add_option("--manhole", opt->manhole,
+                  "Every plate's opening: SHAPE,W,H,CENTRE_Z_REL[,CORNER_R] with SHAPE ellipse or "
+                  "rounded_rectangle (metres; centre height / section height; default "
+                  "ellipse,0.45,0.70,0.5; corner radius 0.1)");
+  sub->add_option("--curve-radius", opt->curve_radius,
+                  "Horizontal curve radius in metres (0 = straight, > 0 left, < 0 right; |R| >= 50)");
+  sub->add_option("--gradient-pct", opt->gradient_pct,
+                  "Longitudinal gradient in percent (> 0 rises along the girder; -10..10)");
+  sub->add_option("--cross-fall-deg", opt->cross_fall_deg,
+                  "Cross-fall: roll of the cross-section in degrees (> 0 lifts the left wall; -10..10)");
   sub->add_option("--format", opt->format,
                   "Output layout: dataset (dataset.json, default) or tum (TUM RGB-D: depth.txt, "
                   "rgb.txt, groundtruth.txt)")

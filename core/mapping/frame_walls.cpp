@@ -1,11 +1,13 @@
 #include "core/mapping/frame_walls.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <unordered_map>
 
+#include "core/mapping/plate_rims.h"
 #include "core/mapping/station_sections.h"
 #include "core/tunnel/zone_clustering.h"
 
@@ -107,6 +109,7 @@ void local_insets(const TunnelMap& m, const FrameWallsOptions& o, std::vector<Wa
 void extract_frame_walls(const FrameResult& r, FrameWalls& out, const FrameWallsOptions& o) {
   const int block = o.block_px, min_transverse = o.min_transverse_points;
   out.samples.clear();
+  out.rims.clear();
   const TunnelMap& m = r.map;
   const PlaneSegments& ps = r.planes;
   if (!m.detected || ps.labels.empty() || r.cloud.points.size() != ps.labels.size()) return;
@@ -157,6 +160,11 @@ void extract_frame_walls(const FrameResult& r, FrameWalls& out, const FrameWalls
       }
     }
   local_insets(m, o, out.samples);
+  std::vector<int> plates;
+  for (const auto& [id, k] : kind)
+    if (k.wall == kTransverseSample) plates.push_back(id);
+  std::sort(plates.begin(), plates.end());
+  extract_plate_rims(r, plates, o, out.rims);
 }
 
 }  // namespace tunnelmap

@@ -25,8 +25,17 @@ struct WallSample {
   bool on_surface = true;      // the inset is known (false: a plane of no zone of the wall)
 };
 
+// A point on the edge of an opening in a plane across the axis (a manhole's rim): the plate's
+// last pixel before the view passes through the opening to something farther, moved along its
+// ray onto the plate's fitted plane (camera frame).
+struct RimPoint {
+  Eigen::Vector3f point = Eigen::Vector3f::Zero();
+  int plane = 0;  // plane id (label) of the plate
+};
+
 struct FrameWalls {
   std::vector<WallSample> samples;
+  std::vector<RimPoint> rims;  // of the planes whose samples are kTransverseSample
 };
 
 struct FrameWallsOptions {
@@ -45,6 +54,11 @@ struct FrameWallsOptions {
   int min_zone_points = 60;   // per station, to see where the cross-section changes
   int min_part_points = 300;  // per part, for the outer surface (the detector's zone support)
   double max_inset_m = 0.03;
+  // A plate pixel is on an opening's rim when, within `rim_search_px` past the plate's edge,
+  // the view lands at least `see_through_m` farther (through the opening, not on a wall).
+  double see_through_m = 0.15;
+  int rim_search_px = 4;
+  int max_rim_points_per_plate = 800;
 };
 
 // The samples of `r` (its map must come from r.planes). Planes of walls the frame measured,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mapping/girder_structure.h"
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/map_options.h"  // StationMapOptions
 #include "core/tunnel/tunnel_map.h"
@@ -52,6 +53,7 @@ struct StationMap {
   std::vector<Section> sections;   // in order along the axis
   std::vector<PoseGroupStatus> poses;
   std::vector<TunnelMap> section_maps;  // one world-frame map (walls, zones) per section
+  GirderStructure girder;          // diaphragms, manholes, compartments, centre line
   int frames = 0, frames_used = 0;
   StageTimings timings_ms;         // "map" (total), per frame: see frame_ms
 

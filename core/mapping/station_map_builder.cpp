@@ -250,11 +250,13 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
     double worst = 0.0;
     int worst_pair = 0;
     for (int k = f0; k <= f1; ++k) {
-      const WallProfile* w = at(k);
-      if (!w || w->frames < 2) continue;
+      // The map's own dimensions there, each from frames that saw both walls of the pair:
+      // an error of the earlier frames' poses does not enter.
+      const Dims here = station_dims(k);
       const WallProfile& f = mine[static_cast<std::size_t>(k - f0)];
       for (int a : {0, 2}) {
-        const double d = dim(f, a) - dim(*w, a);
+        if ((a == 0 ? here.width_frames : here.height_frames) < 2) continue;
+        const double d = dim(f, a) - (a == 0 ? here.width_m : here.height_m);
         if (std::isnan(d)) continue;
         ++compared;
         if (std::abs(d) > tunnel_.context_tolerance_m) ++disagree;
@@ -359,11 +361,14 @@ void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& w
     Pieces own;
     frame_pieces(map, walls, T, index, own);
     apply_context(map, own, T);
-    if (map.detected)
+    if (map.detected) {
       for (auto& [k, v] : own) {
         std::vector<Piece>& dst = pieces_[k];
         dst.insert(dst.end(), v.begin(), v.end());
       }
+      add_plate_views(index, walls, T);
+      record_frame_dims(index, own);
+    }
   }
   scans_.push_back({map, T, index});
   TunnelMap& kept = scans_.back().map;  // per-plane arrays are not needed for the map
@@ -374,6 +379,58 @@ void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& w
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
+void StationMapBuilder::record_frame_dims(int frame, const Pieces& own) {
+  if (own.empty()) return;
+  const int f0 = own.begin()->first, f1 = own.rbegin()->first;
+  const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+  for (const auto& [k, pieces] : own) {
+    const WallProfile& w = mine[static_cast<std::size_t>(k - f0)];
+    const double width = w.wall_m[0] + w.wall_m[1], height = w.wall_m[2] + w.wall_m[3];
+    if (std::isnan(width) && std::isnan(height)) continue;
+    double range = 0;
+    int points = 0;
+    for (const Piece& p : pieces) range += p.range_m * p.points, points += p.points;
+    frame_dims_[k].push_back({frame, width, height, points > 0 ? range / points : kNaN});
+  }
+}
+
+StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
+  Dims d{kNaN, kNaN, 0, 0};
+  const auto it = frame_dims_.find(station);
+  if (it == frame_dims_.end()) return d;
+  for (const bool near_only : {true, false}) {
+    std::vector<double> w, h;
+    for (const FrameDims& f : it->second) {
+      if (near_only && !(f.range_m <= options_.near_range_m)) continue;
+      if (!std::isnan(f.width_m)) w.push_back(f.width_m);
+      if (!std::isnan(f.height_m)) h.push_back(f.height_m);
+    }
+    if (std::isnan(d.width_m) && !w.empty()) d.width_m = median(w), d.width_frames = static_cast<int>(w.size());
+    if (std::isnan(d.height_m) && !h.empty()) d.height_m = median(h), d.height_frames = static_cast<int>(h.size());
+  }
+  return d;
+}
+
+void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls,
+                                        const Eigen::Isometry3d& T) {
+  const Eigen::Vector3d left = up_.cross(axis_);
+  const auto map_coordinates = [&](const Eigen::Vector3f& camera_point) {
+    const Eigen::Vector3d d = T * camera_point.cast<double>() - origin_;
+    return Eigen::Vector3d(axis_.dot(d), left.dot(d), up_.dot(d));
+  };
+  std::map<int, PlateView> by_plane;
+  for (const WallSample& s : walls.samples) {
+    if (s.wall != kTransverseSample) continue;
+    PlateView& v = by_plane[s.plane];
+    v.frame = frame;
+    v.samples.push_back(map_coordinates(s.point));
+    v.weights.push_back(s.points);
+  }
+  for (const RimPoint& r : walls.rims)
+    if (const auto it = by_plane.find(r.plane); it != by_plane.end())
+      it->second.rim.push_back(map_coordinates(r.point));
+  for (auto& [plane, v] : by_plane) plates_.push_back(std::move(v));
+}
 
 namespace {
 
@@ -433,8 +490,11 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   const std::size_t n = prof.size();
   std::vector<double> w(n), h(n);
   for (std::size_t k = 0; k < n; ++k) {
-    w[k] = prof[k].wall_m[0] + prof[k].wall_m[1];
-    h[k] = prof[k].wall_m[2] + prof[k].wall_m[3];
+    // Each frame's own dimensions first (drift in the poses cannot make them differ); the
+    // pooled wall positions where no frame saw both walls of a pair at the station.
+    const Dims d = station_dims(k0 + static_cast<int>(k));
+    w[k] = !std::isnan(d.width_m) ? d.width_m : prof[k].wall_m[0] + prof[k].wall_m[1];
+    h[k] = !std::isnan(d.height_m) ? d.height_m : prof[k].wall_m[2] + prof[k].wall_m[3];
   }
   const SectionSplit split = split_sections(w, h, options_.section_change_mm / 1000.0,
                                             options_.min_section_stations);
@@ -507,6 +567,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   }
   out.ok = true;
   out.status = "ok";
+  out.girder = build_girder_structure(out, plates_);
   out.timings_ms["map"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -77,7 +77,28 @@ class StationMapBuilder {
   bool have_frame_ = false, have_origin_ = false;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero(), axis_ = Eigen::Vector3d::UnitX(),
                   up_ = Eigen::Vector3d::UnitZ(), first_view_ = Eigen::Vector3d::UnitX();
+  // A frame's own cross-section at one station: both walls of a pair measured by that frame
+  // along its own wall normals, so that no error of its pose enters (NaN: pair not seen).
+  struct FrameDims {
+    int frame;
+    double width_m, height_m;
+    double range_m;  // mean depth of the frame's pieces at the station
+  };
+  void record_frame_dims(int frame, const Pieces& own);
+  // The station's width and height over the frames that measured them there: the median of the
+  // near views (map.near_range_m) where there are any, else of all. NaN where no frame did.
+  struct Dims {
+    double width_m, height_m;
+    int width_frames, height_frames;
+  };
+  Dims station_dims(int station) const;
+
+  // The plates across the axis in an accepted frame's samples, in map coordinates.
+  void add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T);
+
   Pieces pieces_;                 // accepted frames' pieces
+  std::vector<PlateView> plates_; // accepted frames' views of plates across the axis
+  std::map<int, std::vector<FrameDims>> frame_dims_;  // by station, accepted frames
   std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
   double last_frame_ms_ = 0.0;
 };

@@ -1,5 +1,6 @@
 #include "core/report/station_map_json.h"
 
+#include "core/report/girder_json.h"
 #include "core/report/json_numbers.h"
 
 #include <cmath>
@@ -87,6 +88,7 @@ nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& p
   doc["stations"] = stations;
   doc["sections"] = sections;
   doc["poses"] = poses;
+  add_girder_json(m.girder, doc);
   doc["frames"] = frames;
   const double map_ms = m.timings_ms.count("map") ? m.timings_ms.at("map") : 0.0;
   doc["summary"] = {{"frames", m.frames},
@@ -95,6 +97,7 @@ nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& p
                     {"sections", m.sections.size()},
                     {"out_of_tolerance", m.out_of_tolerance().size()},
                     {"rescan_poses", rescans},
+                    {"diaphragms", m.girder.diaphragms.size()},
                     {"extent_m", m.stations.empty() ? nlohmann::json(nullptr)
                                                     : nlohmann::json({round_to(m.sections.front().from_m, 1e-4),
                                                                       round_to(m.sections.back().to_m, 1e-4)})},

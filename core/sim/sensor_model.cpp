@@ -37,6 +37,11 @@ double quantization_step_m(double depth_m, double fx, double baseline_m, int ste
   return depth_m * depth_m / (fx * baseline_m * steps);
 }
 
+double tof_sigma_m(double depth_m, double incidence_rad, double base_m, double per_m) {
+  const double c = std::max(std::cos(std::abs(incidence_rad)), 0.1);
+  return (base_m + per_m * std::max(depth_m, 0.0)) / std::sqrt(c);
+}
+
 double grazing_dropout_probability(double incidence_rad, double start_deg, double full_deg) {
   const double s = (std::abs(incidence_rad) / kDeg - start_deg) / (full_deg - start_deg);
   if (s <= 0.0) return 0.0;

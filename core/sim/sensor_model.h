@@ -26,6 +26,10 @@ double quantize_depth_m(double depth_m, double fx, double baseline_m, int steps)
 // Depth step between two adjacent quantised disparities at this depth (z^2 / (fx b steps)).
 double quantization_step_m(double depth_m, double fx, double baseline_m, int steps);
 
+// Time-of-flight axial standard deviation in metres: (base + per_m * z) / sqrt(cos theta), cos
+// clamped at 0.1 (the returned amplitude falls with the incidence; noise ~ 1/sqrt(amplitude)).
+double tof_sigma_m(double depth_m, double incidence_rad, double base_m, double per_m);
+
 // Dropout probability from the incidence angle alone: 0 below start, rising as the square of
 // the normalised angle to 1 at full.
 double grazing_dropout_probability(double incidence_rad, double start_deg, double full_deg);

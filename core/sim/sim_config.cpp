@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/sim/sim_girder.h"
 #include "core/sim/sim_sections.h"
 #include "core/util/error.h"
 
@@ -55,6 +56,16 @@ void check_layout(const SimConfig& c) {
     throw ParameterError("simulator: " + std::to_string(c.diaphragm_x_m.size()) +
                          " diaphragms is too many (at most 1000)");
   for (double x : c.diaphragm_x_m) check_range("diaphragm_x_m", x, -kFar, kFar);
+  if (c.girder_length_m) check_range("girder_length_m", *c.girder_length_m, 1.0, kFar);
+  if (c.diaphragm_spacing_m != 0.0) {
+    if (!c.girder_length_m)
+      throw ParameterError("simulator: diaphragm_spacing_m needs girder_length_m (the girder's length)");
+    check_range("diaphragm_spacing_m", c.diaphragm_spacing_m, 0.5, 100.0);
+  }
+  const std::size_t plates = sim::diaphragm_stations(c).size();
+  if (plates > 1000)
+    throw ParameterError("simulator: " + std::to_string(plates) +
+                         " diaphragms is too many (at most 1000)");
   if (c.walk) {
     check_range("walk start_x_m", c.walk->start_x_m, -kFar, kFar);
     check_range("walk end_x_m", c.walk->end_x_m, -kFar, kFar);
@@ -130,9 +141,18 @@ void SimConfig::validate() const {
   const double min_w = layout.min_width(), min_h = layout.min_height();
   if (distance_to_manhole_m) check_range("distance_to_manhole_m", *distance_to_manhole_m, 0.5, 50.0);
   for (double d : manhole_distances_m) check_range("manhole_distances_m", d, 0.5, 50.0);
-  if (distance_to_manhole_m || !manhole_distances_m.empty() || !diaphragm_x_m.empty()) {
+  if (manhole_shape != "ellipse" && manhole_shape != "rounded_rectangle")
+    throw ParameterError("simulator: manhole_shape must be ellipse or rounded_rectangle, got '" +
+                         manhole_shape + "'");
+  if (distance_to_manhole_m || !manhole_distances_m.empty() || !sim::diaphragm_stations(*this).empty()) {
     check_range("manhole_width_m", manhole_width_m, 0.05, min_w - 0.02);
     check_range("manhole_height_m", manhole_height_m, 0.05, min_h - 0.02);
+    // 1 cm to spare above and below in the lowest section.
+    const double margin = (0.5 * manhole_height_m + 0.01) / min_h;
+    check_range("manhole_centre_z_rel", manhole_centre_z_rel, margin, 1.0 - margin);
+    if (manhole_shape == "rounded_rectangle")
+      check_range("manhole_corner_radius_m", manhole_corner_radius_m, 0.0,
+                  0.5 * std::min(manhole_width_m, manhole_height_m));
   }
   if (end_wall_distance_m) check_range("end_wall_distance_m", *end_wall_distance_m, 0.1, 100.0);
   check_range("noise_scale", noise_scale, 0.0, 10.0);
@@ -153,6 +173,13 @@ void SimConfig::validate() const {
   check_range("speckle_dropout", speckle_dropout, 0.0, 1.0);
   if (rgb_format != "png" && rgb_format != "jpg")
     throw ParameterError("simulator: rgb_format must be png or jpg, got '" + rgb_format + "'");
+  if (noise_model != "structured_light" && noise_model != "tof")
+    throw ParameterError("simulator: noise_model must be structured_light or tof, got '" +
+                         noise_model + "'");
+  check_range("tof_sigma_m", tof_sigma_m, 0.0, 0.1);
+  check_range("tof_sigma_per_m", tof_sigma_per_m, 0.0, 0.1);
+  check_range("tof_flying_pixel_probability", tof_flying_pixel_probability, 0.0, 1.0);
+  check_range("tof_edge_threshold_m", tof_edge_threshold_m, 0.001, 10.0);
   check_range("baseline_m", baseline_m, 0.01, 1.0);
   check_range("subpixel_steps", subpixel_steps, 1, 64);
   check_range("max_depth_m", max_depth_m, 0.5, 65.0);  // 16-bit millimetres
@@ -175,6 +202,19 @@ void SimConfig::validate() const {
     throw ParameterError("simulator: arm_preset must be empty or inchworm7, got '" + arm_preset + "'");
   check_range("arm_setback_m", arm_setback_m, 0.0, 1.0);
   check_range("arm_sag_deg_per_m", arm_sag_deg_per_m, 0.0, 10.0);
+  check_range("drift_translation_mm_per_sqrt_m", drift_translation_mm_per_sqrt_m, 0.0, 100.0);
+  check_range("drift_rotation_deg_per_sqrt_m", drift_rotation_deg_per_sqrt_m, 0.0, 5.0);
+  if (curve_radius_m != 0.0) {
+    if (!std::isfinite(curve_radius_m) || std::abs(curve_radius_m) < 50.0 ||
+        std::abs(curve_radius_m) > 1e6)
+      throw ParameterError("simulator: curve_radius_m = " + fmt(curve_radius_m) +
+                           " must be 0 (straight) or between 50 and 1e+06 in size");
+  }
+  check_range("gradient_pct", gradient_pct, -10.0, 10.0);
+  check_range("cross_fall_deg", cross_fall_deg, -10.0, 10.0);
+  if (curved() && !arm_preset.empty())
+    throw ParameterError("simulator: arm_preset needs a straight girder (curve_radius_m, "
+                         "gradient_pct and cross_fall_deg 0)");
 }
 
 }  // namespace tunnelmap

@@ -32,10 +32,14 @@ struct SimSection {
 // A walk of the robot along the tunnel: `stops` camera stations evenly spaced from start_x_m
 // to end_x_m (world X), one contiguous pose group per stop, each at `pose` (relative to the
 // cross-section of the section at that station).
+// With `through_openings`, the camera follows the manholes near every plate: within 0.5 m of a
+// plate's station it is at the opening's centre (y = 0, z = the opening's centre height),
+// from 1.5 m on at `pose`, blended smoothly in between (docs/simulator.md#long-girders).
 struct SimWalk {
   double start_x_m = 0.0, end_x_m = 2.0;
   int stops = 5;
   SimCameraPose pose;
+  bool through_openings = false;
 };
 
 // Wall order used for per-wall arrays: left (y = +W/2), right (y = -W/2), top (z = H),
@@ -59,11 +63,27 @@ struct SimConfig {
   // groups cycle through `manhole_distances_m` (empty = no manhole plate).
   std::optional<double> distance_to_manhole_m;
   std::vector<double> manhole_distances_m;
-  double manhole_width_m = 0.45;   // elliptical opening, centred in the cross-section
+  double manhole_width_m = 0.45;   // the opening of every plate, centred across the section
   double manhole_height_m = 0.70;
+  std::string manhole_shape = "ellipse";  // "ellipse" | "rounded_rectangle"
+  double manhole_corner_radius_m = 0.10;  // rounded_rectangle: radius of its four corners
+  double manhole_centre_z_rel = 0.5;      // centre height of the opening / H of its section
   // Manhole diaphragms: more transverse plates at these world X positions, each with the same
   // opening, centred in that section's cross-section. Seen from both sides.
   std::vector<double> diaphragm_x_m;
+  // A whole girder (docs/simulator.md#long-girders): stations 0..girder_length_m, a start wall
+  // at 0 and the end wall at girder_length_m (end_wall_distance_m is then not used), and with
+  // diaphragm_spacing_m > 0 diaphragms at S, 2S, ... short of the end (besides diaphragm_x_m).
+  std::optional<double> girder_length_m;
+  double diaphragm_spacing_m = 0.0;
+  // Alignment (docs/simulator.md#curves): horizontal curve radius (0 = straight; > 0 turns
+  // left, < 0 right), constant gradient in percent (> 0 rises with the station) and cross-fall
+  // (roll of the cross-section about the girder axis; > 0 lifts the left wall). Any of them
+  // makes the girder a chain of straight compartments (core/sim/sim_alignment.h).
+  double curve_radius_m = 0.0;
+  double gradient_pct = 0.0;
+  double cross_fall_deg = 0.0;
+  bool curved() const { return curve_radius_m != 0.0 || gradient_pct != 0.0 || cross_fall_deg != 0.0; }
   // End wall: this far beyond the manhole plate if there is one, else beyond the camera (with
   // a walk: beyond its furthest station, or the plate if that is further).
   std::optional<double> end_wall_distance_m = 3.0;
@@ -87,6 +107,16 @@ struct SimConfig {
   double rust_dropout = 0.25;       // extra dropout probability on rust
   double speckle_dropout = 0.01;    // random isolated dropouts everywhere
   std::string rgb_format = "png";   // colour image files: "png" (lossless) or "jpg" (small)
+
+  // Depth noise model (docs/simulator.md#sensor-model): "structured_light" (PrimeSense /
+  // Structure Sensor class: lateral jitter, axial sigma growing as z^2, disparity quantisation)
+  // or "tof" (time of flight: sigma = (tof_sigma_m + tof_sigma_per_m * z) / sqrt(cos theta), no
+  // quantisation, no lateral jitter, flying pixels mixing the depths across depth edges).
+  std::string noise_model = "structured_light";
+  double tof_sigma_m = 0.0015;                 // at zero depth, normal incidence
+  double tof_sigma_per_m = 0.0015;             // growth per metre of depth
+  double tof_flying_pixel_probability = 0.5;   // of a pixel at a depth edge
+  double tof_edge_threshold_m = 0.05;          // depth jump to a 4-neighbour that makes an edge
 
   // Sensor (structured light, PrimeSense / Structure Sensor class).
   double baseline_m = 0.075;
@@ -116,6 +146,18 @@ struct SimConfig {
   std::string arm_preset;
   double arm_setback_m = 0.45;
   double arm_sag_deg_per_m = 0.0;  // link sag: droop angle per metre of horizontal reach
+
+  // Odometry drift (docs/simulator.md#odometry-drift): a seeded random walk along the distance
+  // the camera travelled from pose group to pose group. Each of the three translation
+  // components gains N(0, (drift_translation_mm_per_sqrt_m / 1000)^2 * ds) and the rotation
+  // error turns by N(0, (drift_rotation_deg_per_sqrt_m)^2 * ds) degrees about each world axis
+  // for ds metres travelled. Frames of one pose group share their group's drift. The dataset's
+  // "pose" (or, with an arm, its "robot_base") carries the drift; "pose_true" the truth.
+  double drift_translation_mm_per_sqrt_m = 0.0;
+  double drift_rotation_deg_per_sqrt_m = 0.0;
+  bool has_drift() const {
+    return drift_translation_mm_per_sqrt_m > 0.0 || drift_rotation_deg_per_sqrt_m > 0.0;
+  }
 
   // Throws ParameterError (one line) for unknown names.
   static SimConfig from_preset(const std::string& name);

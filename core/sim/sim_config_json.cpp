@@ -25,6 +25,12 @@ json sim_config_to_json(const SimConfig& c) {
   j["manhole_distances_m"] = c.manhole_distances_m;
   j["manhole_width_m"] = c.manhole_width_m;
   j["manhole_height_m"] = c.manhole_height_m;
+  // The girder's features are written only when used (the constant tunnel keeps its bytes).
+  if (c.manhole_shape != "ellipse" || c.manhole_centre_z_rel != 0.5) {
+    j["manhole_shape"] = c.manhole_shape;
+    j["manhole_corner_radius_m"] = c.manhole_corner_radius_m;
+    j["manhole_centre_z_rel"] = c.manhole_centre_z_rel;
+  }
   j["end_wall_distance_m"] = c.end_wall_distance_m ? json(*c.end_wall_distance_m) : json();
   j["seed"] = c.seed;
   j["noise_scale"] = c.noise_scale;
@@ -46,6 +52,13 @@ json sim_config_to_json(const SimConfig& c) {
   j["rust_dropout"] = c.rust_dropout;
   j["speckle_dropout"] = c.speckle_dropout;
   j["rgb_format"] = c.rgb_format;
+  if (c.noise_model != "structured_light") {
+    j["noise_model"] = c.noise_model;
+    j["tof_sigma_m"] = c.tof_sigma_m;
+    j["tof_sigma_per_m"] = c.tof_sigma_per_m;
+    j["tof_flying_pixel_probability"] = c.tof_flying_pixel_probability;
+    j["tof_edge_threshold_m"] = c.tof_edge_threshold_m;
+  }
   j["baseline_m"] = c.baseline_m;
   j["subpixel_steps"] = c.subpixel_steps;
   j["quantize_disparity"] = c.quantize_disparity;
@@ -66,15 +79,28 @@ json sim_config_to_json(const SimConfig& c) {
     j["sections_start_x_m"] = c.sections_start_x_m;
   }
   if (!c.diaphragm_x_m.empty()) j["diaphragm_x_m"] = c.diaphragm_x_m;
-  if (c.walk)
+  if (c.girder_length_m) j["girder_length_m"] = *c.girder_length_m;
+  if (c.diaphragm_spacing_m != 0.0) j["diaphragm_spacing_m"] = c.diaphragm_spacing_m;
+  if (c.curved()) {
+    j["curve_radius_m"] = c.curve_radius_m;
+    j["gradient_pct"] = c.gradient_pct;
+    j["cross_fall_deg"] = c.cross_fall_deg;
+  }
+  if (c.walk) {
     j["walk"] = {{"start_x_m", c.walk->start_x_m}, {"end_x_m", c.walk->end_x_m},
                  {"stops", c.walk->stops}, {"pose", pose_to_json(c.walk->pose)}};
+    if (c.walk->through_openings) j["walk"]["through_openings"] = true;
+  }
   j["jitter_translation_m"] = c.jitter_translation_m;
   j["jitter_rotation_deg"] = c.jitter_rotation_deg;
   j["frame_interval_s"] = c.frame_interval_s;
   j["arm_preset"] = c.arm_preset;
   j["arm_setback_m"] = c.arm_setback_m;
   j["arm_sag_deg_per_m"] = c.arm_sag_deg_per_m;
+  if (c.has_drift()) {
+    j["drift_translation_mm_per_sqrt_m"] = c.drift_translation_mm_per_sqrt_m;
+    j["drift_rotation_deg_per_sqrt_m"] = c.drift_rotation_deg_per_sqrt_m;
+  }
   return j;
 }
 
@@ -115,6 +141,9 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "manhole_distances_m", c.manhole_distances_m);
     read(j, "manhole_width_m", c.manhole_width_m);
     read(j, "manhole_height_m", c.manhole_height_m);
+    read(j, "manhole_shape", c.manhole_shape);
+    read(j, "manhole_corner_radius_m", c.manhole_corner_radius_m);
+    read(j, "manhole_centre_z_rel", c.manhole_centre_z_rel);
     read_optional(j, "end_wall_distance_m", c.end_wall_distance_m);
     read(j, "seed", c.seed);
     read(j, "noise_scale", c.noise_scale);
@@ -139,6 +168,11 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "rust_dropout", c.rust_dropout);
     if (j.contains("rgb_format") && j["rgb_format"].is_string()) c.rgb_format = j["rgb_format"].get<std::string>();
     read(j, "speckle_dropout", c.speckle_dropout);
+    read(j, "noise_model", c.noise_model);
+    read(j, "tof_sigma_m", c.tof_sigma_m);
+    read(j, "tof_sigma_per_m", c.tof_sigma_per_m);
+    read(j, "tof_flying_pixel_probability", c.tof_flying_pixel_probability);
+    read(j, "tof_edge_threshold_m", c.tof_edge_threshold_m);
     read(j, "baseline_m", c.baseline_m);
     read(j, "subpixel_steps", c.subpixel_steps);
     read(j, "quantize_disparity", c.quantize_disparity);
@@ -167,6 +201,11 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     }
     read(j, "sections_start_x_m", c.sections_start_x_m);
     read(j, "diaphragm_x_m", c.diaphragm_x_m);
+    read_optional(j, "girder_length_m", c.girder_length_m);
+    read(j, "diaphragm_spacing_m", c.diaphragm_spacing_m);
+    read(j, "curve_radius_m", c.curve_radius_m);
+    read(j, "gradient_pct", c.gradient_pct);
+    read(j, "cross_fall_deg", c.cross_fall_deg);
     if (j.contains("walk") && !j.at("walk").is_null()) {
       const json& w = j.at("walk");
       if (!w.is_object()) throw InputError(source, "simulator walk must be an object or null");
@@ -175,6 +214,7 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
       read(w, "end_x_m", walk.end_x_m);
       read(w, "stops", walk.stops);
       if (w.contains("pose")) walk.pose = read_pose(w.at("pose"));
+      read(w, "through_openings", walk.through_openings);
       c.walk = walk;
     }
     read(j, "jitter_translation_m", c.jitter_translation_m);
@@ -183,6 +223,8 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "arm_preset", c.arm_preset);
     read(j, "arm_setback_m", c.arm_setback_m);
     read(j, "arm_sag_deg_per_m", c.arm_sag_deg_per_m);
+    read(j, "drift_translation_mm_per_sqrt_m", c.drift_translation_mm_per_sqrt_m);
+    read(j, "drift_rotation_deg_per_sqrt_m", c.drift_rotation_deg_per_sqrt_m);
     c.validate();
     return c;
   } catch (const json::exception& e) {

@@ -1,6 +1,7 @@
 #include "core/sim/sim_dataset_writer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 
 #include "core/kinematics/robot_json.h"
 #include "core/sim/sim_config_json.h"
+#include "core/sim/sim_girder.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -89,6 +91,67 @@ json sections_json(const TunnelSimulator& sim, double min_cam_x, double max_cam_
   return out;
 }
 
+// The girder's truth (docs/simulator.md#ground-truth-of-the-girder) over stations lo..hi.
+json girder_json(const TunnelSimulator& sim, double lo, double hi) {
+  const SimConfig& c = sim.config();
+  const sim::SimAlignment& align = sim.geometry().alignment();
+  const sim::SimSections& layout = sim.sections();
+  auto centre = [&](double s) {
+    return align.to_world(Eigen::Vector3d(s, 0.0, 0.5 * layout.at(s).height_m));
+  };
+  json line = json::array();
+  constexpr double kStep = 0.1;
+  const long first = static_cast<long>(std::ceil(lo / kStep - 1e-9));
+  const long last = static_cast<long>(std::floor(hi / kStep + 1e-9));
+  for (long i = first; i <= last; ++i) {
+    const double s = i * kStep;
+    line.push_back({{"station_m", s}, {"point", vec_json(centre(s))}});
+  }
+  json plates = json::array();
+  std::vector<double> cuts{lo};
+  for (const sim::TunnelGeometry::PlateInfo& p : sim.geometry().plates()) {
+    if (p.station > lo && p.station < hi) cuts.push_back(p.station);
+    plates.push_back({{"station_m", p.station},
+                      {"kind", p.manhole_plate ? "manhole_plate" : "diaphragm"},
+                      {"surface_id", p.id},
+                      {"point", vec_json(p.centreline_world)},
+                      {"normal", vec_json(p.normal_world)},
+                      {"manhole",
+                       {{"center", vec_json(p.centre_world)},
+                        {"width_m", c.manhole_width_m},
+                        {"height_m", c.manhole_height_m},
+                        {"shape", c.manhole_shape},
+                        {"centre_z_m", p.centre_z}}}});
+    if (c.manhole_shape == "rounded_rectangle")
+      plates.back()["manhole"]["corner_radius_m"] = c.manhole_corner_radius_m;
+  }
+  // Compartments between plates, split where the cross-section changes.
+  for (double x : layout.joints_x())
+    if (x > lo && x < hi) cuts.push_back(x);
+  cuts.push_back(hi);
+  std::sort(cuts.begin(), cuts.end());
+  json rooms = json::array();
+  for (std::size_t i = 1; i < cuts.size(); ++i) {
+    if (cuts[i] - cuts[i - 1] < 1e-9) continue;
+    const sim::SimSpan& span = layout.at(0.5 * (cuts[i - 1] + cuts[i]));
+    rooms.push_back({{"from_m", cuts[i - 1]},
+                     {"to_m", cuts[i]},
+                     {"width_m", span.width_m},
+                     {"height_m", span.height_m}});
+  }
+  json g = {{"station_step_m", kStep},
+            {"from_m", lo},
+            {"to_m", hi},
+            {"curve_radius_m", c.curve_radius_m},
+            {"gradient_pct", c.gradient_pct},
+            {"cross_fall_deg", c.cross_fall_deg},
+            {"centreline", line},
+            {"diaphragms", plates},
+            {"compartments", rooms}};
+  if (c.girder_length_m) g["length_m"] = *c.girder_length_m;
+  return g;
+}
+
 }  // namespace
 
 void write_sim_dataset(const std::string& out_dir, const SimConfig& config) {
@@ -107,10 +170,15 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
   const Intrinsics K = Intrinsics::primesense_vga();
   json frames = json::array();
   json robot_json;  // null without an arm
+  // The girder's truth: with any layout feature (the constant tunnel keeps its bytes).
+  const bool girder = !config.sections.empty() || !sim::diaphragm_stations(config).empty() ||
+                      config.walk || config.girder_length_m || config.curved();
   double first_x = 0.0, min_x = 0.0, max_x = 0.0;  // camera x of the rendered frames
   for (int i = 0; i < sim.frame_count(); ++i) {
     const SimFrame f = sim.render(i);
-    const double cam_x = f.frame.pose->translation().x();
+    // Station of the camera (world x on a straight girder; the group's station on a curve).
+    const double cam_x =
+        config.curved() ? sim.group_x(f.pose_group) : f.frame.pose->translation().x();
     if (i == 0) first_x = min_x = max_x = cam_x;
     min_x = std::min(min_x, cam_x);
     max_x = std::max(max_x, cam_x);
@@ -138,7 +206,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     if (f.arm) {
       // Joints only: readers get the pose by forward kinematics, sag included as an error.
       fj["joints"] = f.arm->joints;
-      fj["robot_base"] = pose_json(f.arm->base);
+      fj["robot_base"] = pose_json(f.reported_base);  // drifted like odometry, if drift is on
       fj["pose_true"] = pose_json(*f.frame.pose);
       if (!robot_json.is_object()) {
         RobotModel robot = robot_preset(config.arm_preset);
@@ -146,7 +214,8 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
         robot_json = robot_to_json(robot);
       }
     } else {
-      fj["pose"] = pose_json(*f.frame.pose);
+      fj["pose"] = pose_json(f.reported_pose);  // the frame's pose, or with drift the drifted one
+      if (config.has_drift() || girder) fj["pose_true"] = pose_json(*f.frame.pose);
     }
     if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
     frames.push_back(fj);
@@ -175,6 +244,12 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
   if (sectioned || !config.diaphragm_x_m.empty() || config.walk) {
     gt["sections"] = sections_json(sim, min_x, max_x);
     gt["diaphragms_x_m"] = sim.diaphragms_x();
+  }
+  if (girder) {
+    // Stations of the whole girder, else those the cameras can see.
+    const double lo = config.girder_length_m ? 0.0 : min_x - config.max_depth_m;
+    const double hi = config.girder_length_m ? *config.girder_length_m : max_x + config.max_depth_m;
+    gt["girder"] = girder_json(sim, lo, hi);
   }
 
   json dataset = {

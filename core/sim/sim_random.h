@@ -40,6 +40,8 @@ class SimRandom {
 // Stream tags so that independent uses of one seed never share a sequence.
 constexpr std::uint32_t kStreamGeometry = 0x47454f4du;  // rust patches, roughness hash
 constexpr std::uint32_t kStreamPose = 0x504f5345u;      // per-frame pose jitter
+constexpr std::uint32_t kStreamDrift = 0x44524654u;     // odometry drift, group by group
 constexpr std::uint32_t kStreamRowBase = 0x10000u;      // + row index: per-row sensor noise
+constexpr std::uint32_t kStreamFlyingBase = 0x20000u;   // + row index: ToF flying pixels
 
 }  // namespace tunnelmap::sim

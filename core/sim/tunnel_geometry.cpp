@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/sim/sim_girder.h"
 #include "core/sim/sim_random.h"
 #include "core/sim/sim_sections.h"
+#include "core/util/error.h"
 
 namespace tunnelmap::sim {
 
@@ -55,20 +57,41 @@ TunnelGeometry::TunnelGeometry(const SimConfig& config, std::optional<double> ma
                                      Eigen::Vector3d(faces_back ? -1.0 : 1.0, 0.0, 0.0),
                                      faces_back ? x : -x));
   }
-  if (manhole_x_) {
-    manhole_ = Plate{*manhole_x_, 0.5 * layout.at(*manhole_x_).height_m, next_id++};
-    surfaces_.push_back(make_surface(manhole_->id, "manhole", "", "", -Eigen::Vector3d::UnitX(),
-                                     *manhole_x_));
-  }
-  for (std::size_t i = 0; i < config.diaphragm_x_m.size(); ++i) {
-    const double x = config.diaphragm_x_m[i];
-    diaphragms_.push_back(Plate{x, 0.5 * layout.at(x).height_m, next_id++});
-    surfaces_.push_back(make_surface(diaphragms_.back().id, "diaphragm", std::to_string(i), "",
-                                     -Eigen::Vector3d::UnitX(), x));
-  }
-  if (end_x_) {
-    end_id_ = next_id++;
-    surfaces_.push_back(make_surface(end_id_, "end", "", "", -Eigen::Vector3d::UnitX(), *end_x_));
+  if (config.girder_length_m) start_x_ = 0.0;
+  if (config.curved()) {
+    make_chain(config, next_id);
+  } else {
+    if (manhole_x_) {
+      const double cz = opening_centre_z(config, layout.at(*manhole_x_).height_m);
+      plates_.push_back(Plate{*manhole_x_, cz, next_id++, false});
+      surfaces_.push_back(make_surface(plates_.back().id, "manhole", "", "",
+                                       -Eigen::Vector3d::UnitX(), *manhole_x_));
+    }
+    const std::vector<double> diaphragms = diaphragm_stations(config);
+    for (std::size_t i = 0; i < diaphragms.size(); ++i) {
+      const double x = diaphragms[i];
+      plates_.push_back(Plate{x, opening_centre_z(config, layout.at(x).height_m), next_id++, true});
+      surfaces_.push_back(make_surface(plates_.back().id, "diaphragm", std::to_string(i), "",
+                                       -Eigen::Vector3d::UnitX(), x));
+    }
+    for (const Plate& p : plates_) {
+      PlateInfo info{p.x, p.id, p.centre_z, !p.two_sided};
+      info.centre_world = Eigen::Vector3d(p.x, 0.0, p.centre_z);
+      info.centreline_world = Eigen::Vector3d(p.x, 0.0, 0.5 * layout.at(p.x).height_m);
+      plate_info_.push_back(info);
+    }
+    // By station, for the culling in cast_plates (the manhole plate first at a shared x).
+    std::stable_sort(plates_.begin(), plates_.end(),
+                     [](const Plate& a, const Plate& b) { return a.x < b.x; });
+    if (end_x_) {
+      end_id_ = next_id++;
+      surfaces_.push_back(make_surface(end_id_, "end", "", "", -Eigen::Vector3d::UnitX(), *end_x_));
+    }
+    if (start_x_) {
+      start_id_ = next_id++;
+      surfaces_.push_back(make_surface(start_id_, "end", "", "", Eigen::Vector3d::UnitX(), -*start_x_));
+      surfaces_.back().name = "start";
+    }
   }
 
   // Rivet dome = spherical cap of base radius a and height h: sphere radius (a^2+h^2)/(2h),
@@ -179,6 +202,8 @@ void TunnelGeometry::make_rust() {
       p.rs = rng.uniform(0.05, 0.20);
       rust_[i].push_back(p);
     }
+    std::sort(rust_[i].begin(), rust_[i].end(),
+              [](const RustPatch& a, const RustPatch& b) { return a.x < b.x; });
   }
 }
 
@@ -191,11 +216,105 @@ bool TunnelGeometry::Section::open(const Eigen::Vector3d& p) const {
   return true;
 }
 
+void TunnelGeometry::make_chain(const SimConfig& c, int next_id) {
+  // The straight geometry built so far is the local one; every compartment gets a copy of
+  // its surfaces (ids + k * local_ids_, planes in the world), then the plates on the joints.
+  local_ids_ = next_id - 1;
+  const SimSections layout(c);
+  const std::vector<double> diaphragms = diaphragm_stations(c);
+  std::vector<double> stations = diaphragms;
+  if (manhole_x_) stations.push_back(*manhole_x_);
+  if (end_x_) stations.push_back(*end_x_);
+  if (start_x_) stations.push_back(*start_x_);
+  // The stretch the cameras see: their stations (as TunnelSimulator places them) +- range.
+  double cam_lo = 0.0, cam_hi = 0.0;
+  if (c.walk) {
+    cam_lo = std::min(c.walk->start_x_m, c.walk->end_x_m);
+    cam_hi = std::max(c.walk->start_x_m, c.walk->end_x_m);
+  } else if (manhole_x_) {
+    std::vector<double> d = c.manhole_distances_m;
+    if (c.distance_to_manhole_m) d = {*c.distance_to_manhole_m};
+    cam_lo = *manhole_x_ - *std::max_element(d.begin(), d.end());
+    cam_hi = *manhole_x_ - *std::min_element(d.begin(), d.end());
+  }
+  double lo = cam_lo - c.max_depth_m - 1.0, hi = cam_hi + c.max_depth_m + 1.0;
+  for (double x : stations) lo = std::min(lo, x), hi = std::max(hi, x);
+  alignment_ = SimAlignment(c, stations, lo, hi);
+  const int n = alignment_.compartment_count();
+  const std::size_t id_count = static_cast<std::size_t>(n) * local_ids_ + stations.size();
+  if (id_count >= kSimRivetId)
+    throw ParameterError("simulator: the curved girder needs " + std::to_string(id_count) +
+                         " surface ids (at most 65534): fewer sections or a shorter girder");
+  const std::vector<SimSurface> local = std::move(surfaces_);
+  surfaces_.clear();
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Isometry3d& T = alignment_.world_from_local(k);
+    for (SimSurface s : local) {
+      s.id += k * local_ids_;
+      s.name = "compartment" + std::to_string(k) + "/" + s.name;
+      s.compartment = k;
+      s.normal_world = T.linear() * s.normal_world;
+      s.offset_world -= s.normal_world.dot(T.translation());
+      surfaces_.push_back(s);
+    }
+  }
+  int id = n * local_ids_ + 1;
+  const std::vector<SimJoint>& joints = alignment_.joints();
+  joint_plates_.assign(joints.size(), JointPlate{});
+  auto joint_at = [&](double x) {
+    std::size_t best = 0;
+    for (std::size_t j = 0; j < joints.size(); ++j)
+      if (std::abs(joints[j].station - x) < std::abs(joints[best].station - x)) best = j;
+    return best;
+  };
+  auto add = [&](double x, const std::string& wall, const std::string& part, bool fwd, bool bwd,
+                 bool full) {
+    const std::size_t j = joint_at(x);
+    const SimJoint& J = joints[j];
+    JointPlate& p = joint_plates_[j];
+    p.id = id++;
+    p.forward = fwd;
+    p.backward = bwd;
+    p.full = full;
+    const double cz = opening_centre_z(c, layout.at(x).height_m);
+    p.centre = J.point + (cz - alignment_.reference_z()) * J.up;
+    const Eigen::Vector3d n_face = bwd && !fwd ? J.normal : Eigen::Vector3d(-J.normal);
+    surfaces_.push_back(make_surface(p.id, wall, part, "", n_face, -n_face.dot(J.point)));
+    if (!full) {
+      PlateInfo info{x, p.id, cz, !bwd};
+      info.centre_world = p.centre;
+      info.normal_world = J.normal;
+      info.centreline_world = J.point + (0.5 * layout.at(x).height_m - alignment_.reference_z()) * J.up;
+      plate_info_.push_back(info);
+    }
+  };
+  if (manhole_x_) add(*manhole_x_, "manhole", "", true, false, false);
+  for (std::size_t i = 0; i < diaphragms.size(); ++i)
+    add(diaphragms[i], "diaphragm", std::to_string(i), true, true, false);
+  if (end_x_) {
+    end_id_ = id;
+    add(*end_x_, "end", "", true, false, true);
+  }
+  if (start_x_) {
+    start_id_ = id;
+    add(*start_x_, "end", "", false, true, true);
+    surfaces_.back().name = "start";
+  }
+}
+
+std::vector<TunnelGeometry::PlateInfo> TunnelGeometry::plates() const {
+  std::vector<PlateInfo> out = plate_info_;
+  std::sort(out.begin(), out.end(), [](const PlateInfo& a, const PlateInfo& b) {
+    return a.station < b.station;
+  });
+  return out;
+}
+
 RayHit TunnelGeometry::cast(const Eigen::Vector3d& o, const Eigen::Vector3d& r) const {
+  if (!alignment_.straight()) return cast_chain(o, r);
   RayHit best;
-  cast_sections(o, r, best);
-  if (manhole_) cast_plate(*manhole_, false, o, r, best);
-  for (const Plate& d : diaphragms_) cast_plate(d, true, o, r, best);
+  cast_sections(o, r, 0.0, best);
+  cast_plates(o, r, best);
   if (end_x_ && r.x() > 1e-12) {
     const double t = (*end_x_ - o.x()) / r.x();
     if (t > 0.0 && t < best.t) {
@@ -207,22 +326,100 @@ RayHit TunnelGeometry::cast(const Eigen::Vector3d& o, const Eigen::Vector3d& r) 
       best.plane_offset = *end_x_;
     }
   }
+  if (start_x_ && r.x() < -1e-12) {
+    const double t = (*start_x_ - o.x()) / r.x();
+    if (t > 0.0 && t < best.t) {
+      best = RayHit{};
+      best.t = t;
+      best.surface_id = start_id_;
+      best.point = o + t * r;
+      best.normal = Eigen::Vector3d::UnitX();
+      best.plane_offset = -*start_x_;
+    }
+  }
+  best.local_point = best.point;
   return best;
 }
 
+RayHit TunnelGeometry::cast_chain(const Eigen::Vector3d& o, const Eigen::Vector3d& r) const {
+  // From the origin's compartment on, compartment by compartment: its walls between the
+  // joint planes where the ray enters and leaves it, then the plate on the leaving joint.
+  const std::vector<SimJoint>& J = alignment_.joints();
+  const int n = alignment_.compartment_count();
+  int k = alignment_.compartment_containing(o);
+  double t0 = 0.0;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (int guard = 0; guard <= n; ++guard) {
+    double t1 = kInf;
+    int exit = -1;
+    bool forward = false;
+    if (k < n - 1) {
+      const double den = J[k].normal.dot(r);
+      if (den > 1e-12) {
+        const double t = J[k].normal.dot(J[k].point - o) / den;
+        if (t >= t0 && t < t1) t1 = t, exit = k, forward = true;
+      }
+    }
+    if (k > 0) {
+      const double den = J[k - 1].normal.dot(r);
+      if (den < -1e-12) {
+        const double t = J[k - 1].normal.dot(J[k - 1].point - o) / den;
+        if (t >= t0 && t < t1) t1 = t, exit = k - 1, forward = false;
+      }
+    }
+    const Eigen::Isometry3d& L = alignment_.local_from_world(k);
+    const Eigen::Vector3d ol = L * o, rl = L.linear() * r;
+    RayHit best;
+    best.t = t1;
+    cast_sections(ol, rl, t0, best);
+    if (best.hit()) {
+      const Eigen::Isometry3d& W = alignment_.world_from_local(k);
+      best.local_point = best.point;
+      best.point = o + best.t * r;
+      best.normal = W.linear() * best.normal;
+      best.plane_offset -= best.normal.dot(W.translation());
+      best.sphere_center = W * best.sphere_center;
+      if (!best.rivet) best.surface_id += k * local_ids_;
+      best.compartment = k;
+      return best;
+    }
+    if (exit < 0) return RayHit{};
+    const JointPlate& jp = joint_plates_[exit];
+    if (jp.id != 0 && (forward ? jp.forward : jp.backward)) {
+      const Eigen::Vector3d p = o + t1 * r;
+      const Eigen::Vector3d d = p - jp.centre;
+      if (jp.full || !in_opening(config_, d.dot(J[exit].left), d.dot(J[exit].up))) {
+        RayHit hit;
+        hit.t = t1;
+        hit.surface_id = jp.id;
+        hit.point = p;
+        hit.local_point = L * p;
+        hit.normal = forward ? Eigen::Vector3d(-J[exit].normal) : J[exit].normal;
+        hit.plane_offset = -hit.normal.dot(J[exit].point);
+        hit.compartment = k;
+        return hit;
+      }
+    }
+    k += forward ? 1 : -1;
+    t0 = t1;
+  }
+  return RayHit{};
+}
+
 void TunnelGeometry::cast_sections(const Eigen::Vector3d& o, const Eigen::Vector3d& r,
-                                   RayHit& best) const {
+                                   double t_min, RayHit& best) const {
   // Walk the sections in the ray's direction from the origin's, crossing joints until a hit is
   // nearer than the next joint or the crossing point is outside the next free cross-section.
   const int n = static_cast<int>(sections_.size());
   // The origin's section: the first whose end is beyond it (the last one has none).
-  int k = static_cast<int>(std::upper_bound(sections_.begin(), sections_.end() - 1, o.x(),
+  const double x0 = o.x() + t_min * r.x();
+  int k = static_cast<int>(std::upper_bound(sections_.begin(), sections_.end() - 1, x0,
                                             [](double x, const Section& s) { return x < s.to_x; }) -
                            sections_.begin());
   const int step = r.x() > 1e-12 ? 1 : r.x() < -1e-12 ? -1 : 0;
   for (;;) {
     const Section& sec = sections_[k];
-    for (const Wall& w : sec.walls) cast_wall(sec, k, w, o, r, best);
+    for (const Wall& w : sec.walls) cast_wall(sec, k, w, o, r, t_min, best);
     const int next = k + step;
     if (step == 0 || next < 0 || next >= n) return;
     const double xj = step > 0 ? sec.to_x : sec.from_x;
@@ -243,26 +440,39 @@ void TunnelGeometry::cast_sections(const Eigen::Vector3d& o, const Eigen::Vector
   }
 }
 
-void TunnelGeometry::cast_plate(const Plate& plate, bool two_sided, const Eigen::Vector3d& o,
-                                const Eigen::Vector3d& r, RayHit& best) const {
-  const bool ahead = r.x() > 1e-12;
-  if (!ahead && !(two_sided && r.x() < -1e-12)) return;
-  const double t = (plate.x - o.x()) / r.x();
-  if (t <= 0.0 || t >= best.t) return;
-  const Eigen::Vector3d p = o + t * r;
-  const double ey = p.y() / (0.5 * config_.manhole_width_m);
-  const double ez = (p.z() - plate.centre_z) / (0.5 * config_.manhole_height_m);
-  if (ey * ey + ez * ez < 1.0) return;  // through the opening
-  best = RayHit{};
-  best.t = t;
-  best.surface_id = plate.id;
-  best.point = p;
-  best.normal = Eigen::Vector3d(ahead ? -1.0 : 1.0, 0.0, 0.0);
-  best.plane_offset = ahead ? plate.x : -plate.x;
+void TunnelGeometry::cast_plates(const Eigen::Vector3d& o, const Eigen::Vector3d& r,
+                                 RayHit& best) const {
+  // Plates are sorted by x: only those ahead of the origin in the ray's direction, nearest
+  // first, until one blocks the ray or lies beyond the best hit.
+  auto hit = [&](const Plate& plate, bool ahead) {
+    const double t = (plate.x - o.x()) / r.x();
+    if (t <= 0.0) return false;
+    if (t >= best.t) return true;  // this and every further plate are behind the best hit
+    const Eigen::Vector3d p = o + t * r;
+    if (in_opening(config_, p.y(), p.z() - plate.centre_z)) return false;  // through the opening
+    best = RayHit{};
+    best.t = t;
+    best.surface_id = plate.id;
+    best.point = p;
+    best.normal = Eigen::Vector3d(ahead ? -1.0 : 1.0, 0.0, 0.0);
+    best.plane_offset = ahead ? plate.x : -plate.x;
+    return true;
+  };
+  const auto first_beyond = std::upper_bound(
+      plates_.begin(), plates_.end(), o.x(), [](double x, const Plate& p) { return x < p.x; });
+  if (r.x() > 1e-12) {
+    for (auto it = first_beyond; it != plates_.end(); ++it)
+      if (hit(*it, true)) return;
+  } else if (r.x() < -1e-12) {
+    for (auto it = first_beyond; it != plates_.begin();) {
+      --it;
+      if (it->two_sided && hit(*it, false)) return;
+    }
+  }
 }
 
 void TunnelGeometry::cast_wall(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
-                               const Eigen::Vector3d& r, RayHit& best) const {
+                               const Eigen::Vector3d& r, double t_min, RayHit& best) const {
   const double dn = w.n.dot(r);
   if (dn >= -1e-12) return;  // moving away from (or along) this wall
   const double h0 = w.n.dot(o) + w.d_outer;  // height of the origin above the outer plane
@@ -280,13 +490,13 @@ void TunnelGeometry::cast_wall(const Section& sec, int k, const Wall& w, const E
   };
   // Middle plate (inner plane, height = thickness).
   const double t_in = (w.thickness - h0) / dn;
-  if (t_in > 0.0 && t_in < best.t) {
+  if (t_in > t_min && t_in < best.t) {
     const double s = so + t_in * sr;
     if (s > w.s_mid_lo && s < w.s_mid_hi) take(t_in, w.middle_id, w.n, w.d_outer - w.thickness);
   }
   // Edge bands (outer plane).
   const double t_out = -h0 / dn;
-  if (t_out > 0.0 && t_out < best.t) {
+  if (t_out > t_min && t_out < best.t) {
     const double s = so + t_out * sr;
     if (s >= w.s_min - 1e-9 && s <= w.s_mid_lo) take(t_out, w.edge_lo_id, w.n, w.d_outer);
     else if (s >= w.s_mid_hi && s <= w.s_max + 1e-9) take(t_out, w.edge_hi_id, w.n, w.d_outer);
@@ -296,7 +506,7 @@ void TunnelGeometry::cast_wall(const Section& sec, int k, const Wall& w, const E
     const bool lo = sr > 0.0;
     const double s0 = lo ? w.s_mid_lo : w.s_mid_hi;
     const double t = (s0 - so) / sr;
-    if (t > 0.0 && t < best.t) {
+    if (t > t_min && t < best.t) {
       const double h = h0 + t * dn;
       if (h >= 0.0 && h <= w.thickness) {
         if (lo) take(t, w.step_lo_id, -w.es, w.s_mid_lo);
@@ -304,16 +514,16 @@ void TunnelGeometry::cast_wall(const Section& sec, int k, const Wall& w, const E
       }
     }
   }
-  if (!w.rivet_row_s.empty()) cast_rivets(sec, k, w, o, r, h0, dn, best);
+  if (!w.rivet_row_s.empty()) cast_rivets(sec, k, w, o, r, h0, dn, t_min, best);
 }
 
 void TunnelGeometry::cast_rivets(const Section& sec, int k, const Wall& w,
                                  const Eigen::Vector3d& o, const Eigen::Vector3d& r, double h0,
-                                 double dn, RayHit& best) const {
+                                 double dn, double t_min, RayHit& best) const {
   // Only rivets under the stretch of ray that is lower than a dome can be hit.
-  const double t_top = std::max(0.0, (config_.rivet_height_m - h0) / dn);
+  const double t_top = std::max(t_min, (config_.rivet_height_m - h0) / dn);
   const double t_bottom = -h0 / dn;
-  if (t_bottom <= 0.0 || t_top >= best.t) return;
+  if (t_bottom <= t_min || t_top >= best.t) return;
   const double a = config_.rivet_radius_m, pitch = config_.rivet_pitch_m;
   const double R = sphere_radius_;
   const double s1 = w.es.dot(o + t_top * r), s2 = w.es.dot(o + t_bottom * r);
@@ -335,7 +545,7 @@ void TunnelGeometry::cast_rivets(const Section& sec, int k, const Wall& w,
       const double disc = b * b - (oc.squaredNorm() - R * R);
       if (disc < 0.0) continue;
       const double t = -b - std::sqrt(disc);
-      if (t <= 0.0 || t >= best.t) continue;
+      if (t <= t_min || t >= best.t) continue;
       const Eigen::Vector3d p = o + t * r;
       if (w.n.dot(p) + w.d_outer < 0.0) continue;  // below the plate surface: not the dome
       if (!sec.contains_x(p.x())) continue;          // cut at the section's joints
@@ -355,9 +565,12 @@ void TunnelGeometry::cast_rivets(const Section& sec, int k, const Wall& w,
 
 bool TunnelGeometry::on_rust(const RayHit& hit) const {
   if (hit.wall < 0) return false;
-  const double x = hit.point.x(), s = wall_es_[hit.wall].dot(hit.point);
-  for (const RustPatch& p : rust_[hit.wall]) {
-    const double dx = (x - p.x) / p.rx, ds = (s - p.s) / p.rs;
+  const double x = hit.local_point.x(), s = wall_es_[hit.wall].dot(hit.local_point);
+  const std::vector<RustPatch>& patches = rust_[hit.wall];  // sorted by x
+  auto it = std::lower_bound(patches.begin(), patches.end(), x - kMaxRustRx,
+                             [](const RustPatch& p, double v) { return p.x < v; });
+  for (; it != patches.end() && it->x <= x + kMaxRustRx; ++it) {
+    const double dx = (x - it->x) / it->rx, ds = (s - it->s) / it->rs;
     if (dx * dx + ds * ds < 1.0) return true;
   }
   return false;
@@ -382,16 +595,18 @@ double TunnelGeometry::value_noise(int wall, double x, double s, double cell) co
 
 double TunnelGeometry::rust_relief_m(const RayHit& hit) const {
   if (config_.rust_roughness_m <= 0.0 || !on_rust(hit)) return 0.0;
-  const double s = wall_es_[hit.wall].dot(hit.point);
+  const Eigen::Vector3d& q = hit.local_point;
+  const double s = wall_es_[hit.wall].dot(q);
   // Two octaves: pits of ~1 cm and fine grain of ~3 mm.
-  const double v = 0.7 * value_noise(hit.wall, hit.point.x(), s, 0.010) +
-                   0.3 * value_noise(hit.wall + 8, hit.point.x(), s, 0.003);
+  const double v = 0.7 * value_noise(hit.wall, q.x(), s, 0.010) +
+                   0.3 * value_noise(hit.wall + 8, q.x(), s, 0.003);
   return config_.rust_roughness_m * v;
 }
 
 double TunnelGeometry::texture(const RayHit& hit) const {
   if (hit.wall < 0) return 0.0;
-  return value_noise(hit.wall + 16, hit.point.x(), wall_es_[hit.wall].dot(hit.point), 0.02);
+  return value_noise(hit.wall + 16, hit.local_point.x(), wall_es_[hit.wall].dot(hit.local_point),
+                     0.02);
 }
 
 }  // namespace tunnelmap::sim

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sim/sim_alignment.h"
 #include "core/sim/sim_config.h"
 
 namespace tunnelmap {
@@ -29,6 +30,7 @@ struct SimSurface {
   std::string wall;  // "left","right","top","bottom","joint","manhole","diaphragm","end"
   std::string zone;  // "edge","middle","step" or "" (joints and transverse plates)
   int section = -1;  // wall surfaces: their section (0 without sections); -1 otherwise
+  int compartment = -1;  // curved girder: the compartment of a wall surface; -1 otherwise
   Eigen::Vector3d normal_world = Eigen::Vector3d::Zero();
   double offset_world = 0.0;
 
@@ -45,7 +47,9 @@ struct RayHit {
   int surface_id = 0;        // SimSurface id, kSimRivetId, or 0 for nothing
   int wall = -1;             // SimWall of a wall surface or rivet, -1 otherwise
   int section = -1;          // section of a wall surface or rivet, -1 otherwise
+  int compartment = 0;       // curved girder: the compartment hit (0 when straight)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d local_point = Eigen::Vector3d::Zero();  // (station, y, z); = point if straight
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // unit, towards the ray origin side
   double plane_offset = 0.0;                         // planar hits: normal.dot(x) + offset = 0
   bool rivet = false;
@@ -57,7 +61,8 @@ struct RayHit {
 
 class TunnelGeometry {
  public:
-  // `manhole_x` / `end_x`: world X of the manhole plate and of the end wall, when present.
+  // `manhole_x` / `end_x`: station of the manhole plate and of the end wall, when present.
+  // Throws ParameterError when a curved girder needs more surface ids than 16 bits hold.
   TunnelGeometry(const SimConfig& config, std::optional<double> manhole_x,
                  std::optional<double> end_x);
 
@@ -71,6 +76,20 @@ class TunnelGeometry {
   double texture(const RayHit& hit) const;
 
   const std::vector<SimSurface>& surfaces() const { return surfaces_; }
+  const SimAlignment& alignment() const { return alignment_; }
+  // Transverse plates with the opening (manhole plate, diaphragms) by station, and their ids.
+  struct PlateInfo {
+    double station;
+    int id;
+    double centre_z;  // local height of the opening's centre
+    bool manhole_plate = false;  // the one-sided manhole plate (else a diaphragm)
+    Eigen::Vector3d centre_world = Eigen::Vector3d::Zero();      // the opening's centre
+    Eigen::Vector3d normal_world = Eigen::Vector3d::UnitX();     // unit, to larger stations
+    Eigen::Vector3d centreline_world = Eigen::Vector3d::Zero();  // section centre on the plate
+  };
+  std::vector<PlateInfo> plates() const;
+  std::optional<double> start_station() const { return start_x_; }
+  std::optional<double> end_station() const { return end_x_; }
 
  private:
   struct Wall {
@@ -93,20 +112,33 @@ class TunnelGeometry {
   struct Plate {
     double x, centre_z;  // opening centred at (y = 0, centre_z)
     int id;
+    bool two_sided;      // diaphragms; the manhole plate is seen from the front only
+  };
+  // A chain joint's transverse surface (curved girder): a plate, the end or start wall.
+  struct JointPlate {
+    int id = 0;
+    bool forward = false, backward = false;  // seen by rays going to larger / smaller stations
+    bool full = false;                       // end/start wall: no opening
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  // opening centre (world)
   };
   struct RustPatch {
     double x, s, rx, rs;  // ellipse centre and semi-axes in wall coordinates
   };
+  static constexpr double kMaxRustRx = 0.35;  // largest semi-axis along X (patches sorted by x)
 
   void build_section(int k, double from_x, double to_x, double W, double H, int& next_id);
   void make_rust();
-  void cast_sections(const Eigen::Vector3d& o, const Eigen::Vector3d& r, RayHit& best) const;
+  void make_chain(const SimConfig& config, int next_id);
+  RayHit cast_chain(const Eigen::Vector3d& o, const Eigen::Vector3d& r) const;
+  // Walls, steps, rivets and section joints only, at ray parameters in [t_min, best.t).
+  void cast_sections(const Eigen::Vector3d& o, const Eigen::Vector3d& r, double t_min,
+                     RayHit& best) const;
   void cast_wall(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
-                 const Eigen::Vector3d& r, RayHit& best) const;
+                 const Eigen::Vector3d& r, double t_min, RayHit& best) const;
   void cast_rivets(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
-                   const Eigen::Vector3d& r, double h0, double dn, RayHit& best) const;
-  void cast_plate(const Plate& p, bool two_sided, const Eigen::Vector3d& o,
-                  const Eigen::Vector3d& r, RayHit& best) const;
+                   const Eigen::Vector3d& r, double h0, double dn, double t_min,
+                   RayHit& best) const;
+  void cast_plates(const Eigen::Vector3d& o, const Eigen::Vector3d& r, RayHit& best) const;
   double value_noise(int wall, double x, double s, double cell) const;
 
   SimConfig config_;
@@ -116,10 +148,13 @@ class TunnelGeometry {
   std::array<double, 4> rust_s_min_{}, rust_s_max_{};  // per SimWall, over all sections
   std::vector<std::vector<RustPatch>> rust_;  // per wall
   std::vector<SimSurface> surfaces_;
-  std::optional<double> manhole_x_, end_x_;
-  std::optional<Plate> manhole_;
-  std::vector<Plate> diaphragms_;
-  int end_id_ = 0;
+  std::optional<double> manhole_x_, end_x_, start_x_;
+  std::vector<Plate> plates_;  // manhole plate and diaphragms, by station
+  int end_id_ = 0, start_id_ = 0;
+  SimAlignment alignment_;
+  std::vector<JointPlate> joint_plates_;  // curved girder: per alignment joint
+  int local_ids_ = 0;  // curved girder: surface ids per compartment
+  std::vector<PlateInfo> plate_info_;
   double sphere_radius_ = 0.0, sphere_depth_ = 0.0;  // rivet sphere; centre behind the plane
   std::uint64_t texture_key_ = 0;
 };

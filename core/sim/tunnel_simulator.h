@@ -22,6 +22,19 @@ struct SimFrame {
   int pose_group = 0;
   std::optional<double> distance_to_manhole_m;
   std::optional<SimArmState> arm;  // joints, FK pose, true pose (arm_preset set)
+  // What the dataset tells a reader: with drift the drifted pose, else frame.pose (with an
+  // arm: the forward kinematics of the joints from the (drifted) base, i.e. without sag).
+  Eigen::Isometry3d reported_pose = Eigen::Isometry3d::Identity();
+  // With an arm: the robot base the dataset gives ("robot_base"), drifted when drift is on.
+  Eigen::Isometry3d reported_base = Eigen::Isometry3d::Identity();
+};
+
+// One pose group's odometry error: reported = [rotation * R | t + translation] for a true
+// camera (or robot base) pose [R | t].
+struct SimDrift {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Isometry3d apply(const Eigen::Isometry3d& T) const;
 };
 
 class TunnelSimulator {
@@ -34,6 +47,12 @@ class TunnelSimulator {
   Eigen::Isometry3d pose(int index) const;  // camera-to-world, with the frame's jitter (and sag)
   // Arm state of a frame (nullopt without arm_preset). pose(i) == arm_state(i)->true_pose.
   std::optional<SimArmState> arm_state(int index) const;
+  // The pose a reader of the dataset gets (SimFrame::reported_pose), without rendering.
+  Eigen::Isometry3d reported_pose(int index) const;
+  // Odometry drift of a pose group (identity without drift; group 0 has none) and the
+  // distance the camera travelled from group 0 to it (sum of nominal station-to-station steps).
+  const SimDrift& drift(int group) const;
+  double travelled_m(int group) const { return travelled_.empty() ? 0.0 : travelled_[group]; }
   const std::vector<SimSurface>& surfaces() const { return geometry_.surfaces(); }
   const SimSurface* surface(int id) const;  // nullptr for 0, rivets and unknown ids
 
@@ -66,14 +85,22 @@ class TunnelSimulator {
   static std::optional<double> compute_manhole_x(const SimConfig& c);
   static std::optional<double> compute_end_x(const SimConfig& c);
   Eigen::Isometry3d wanted_pose(int index) const;  // nominal + jitter
+  // Group g's camera pose with a jitter (x, y, z in m; roll, pitch, yaw in degrees).
+  Eigen::Isometry3d group_pose(int g, const double jitter[6]) const;
+  void make_drift();
+  // `ideal` (ToF): receives every pixel's noise-free depth (0 = nothing hit), else nullptr.
   void render_rows(int index, const Eigen::Isometry3d& T, int row_begin, int row_step,
-                   SimFrame& out) const;
+                   SimFrame& out, std::vector<float>* ideal) const;
+  void flying_pixels(int index, const std::vector<float>& ideal, SimFrame& out) const;
 
   SimConfig config_;
   sim::SimSections sections_;
   std::optional<double> manhole_x_;
   sim::TunnelGeometry geometry_;
   int groups_ = 1;
+  std::vector<double> plates_x_;    // diaphragms_x()
+  std::vector<SimDrift> drift_;     // per group; empty without drift
+  std::vector<double> travelled_;   // per group; empty without drift
 };
 
 }  // namespace tunnelmap

@@ -1,0 +1,268 @@
+#include "core/mapping/girder_structure.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/solvers/outline_fit.h"
+#include "core/mapping/station_map.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double median(std::vector<double> v) {
+  if (v.empty()) return kNaN;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double weighted_station(const PlateView& v) {
+  double s = 0, w = 0;
+  for (std::size_t i = 0; i < v.samples.size(); ++i) s += v.samples[i].x() * v.weights[i], w += v.weights[i];
+  return w > 0 ? s / w : kNaN;
+}
+
+// Views grouped into plates: sorted by station, chained while closer than the gap.
+std::vector<std::vector<const PlateView*>> group_views(const std::vector<PlateView>& views, double gap) {
+  std::vector<std::pair<double, const PlateView*>> order;
+  for (const PlateView& v : views)
+    if (!v.samples.empty()) order.push_back({weighted_station(v), &v});
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::vector<const PlateView*>> groups;
+  double last = -1e300;
+  for (const auto& [s, v] : order) {
+    if (groups.empty() || s - last > gap) groups.emplace_back();
+    groups.back().push_back(v);
+    last = s;
+  }
+  return groups;
+}
+
+// Normal of the plate in map coordinates (smallest principal direction of its samples), with
+// a positive station component.
+Eigen::Vector3d plate_normal(const std::vector<const PlateView*>& group) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double w = 0;
+  for (const PlateView* v : group)
+    for (std::size_t i = 0; i < v->samples.size(); ++i) mean += v->samples[i] * v->weights[i], w += v->weights[i];
+  mean /= w;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const PlateView* v : group)
+    for (std::size_t i = 0; i < v->samples.size(); ++i) {
+      const Eigen::Vector3d d = v->samples[i] - mean;
+      cov += v->weights[i] * d * d.transpose();
+    }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  Eigen::Vector3d n = eig.eigenvectors().col(0);
+  return n.x() < 0 ? -n : n;
+}
+
+double plate_area(const std::vector<const PlateView*>& group, double cell) {
+  std::set<std::pair<long, long>> cells;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& s : v->samples)
+      cells.insert({std::lround(std::floor(s.y() / cell)), std::lround(std::floor(s.z() / cell))});
+  return static_cast<double>(cells.size()) * cell * cell;
+}
+
+// The stations within `half` of `s` (whole map when none).
+std::vector<const Station*> stations_near(const StationMap& map, double s, double half) {
+  std::vector<const Station*> out;
+  for (const Station& st : map.stations)
+    if (std::abs(st.station_m - s) <= half) out.push_back(&st);
+  return out;
+}
+
+// Median wall positions (left, right, top, bottom) measured within `half` of station `s`.
+void walls_near(const StationMap& map, double s, double half, double out[4]) {
+  for (int c = 0; c < 4; ++c) {
+    std::vector<double> v;
+    for (const Station* st : stations_near(map, s, half))
+      if (!std::isnan(st->wall_m[c])) v.push_back(st->wall_m[c]);
+    out[c] = median(v);
+  }
+}
+
+const Section* section_at(const StationMap& map, double s) {
+  for (const Section& sec : map.sections)
+    if (s >= sec.from_m && s < sec.to_m) return &sec;
+  if (map.sections.empty()) return nullptr;
+  return s < map.sections.front().from_m ? &map.sections.front() : &map.sections.back();
+}
+
+Eigen::Vector3d to_world(const StationMap& map, double s, double lateral, double vertical) {
+  const Eigen::Vector3d left = map.up.cross(map.axis);
+  return map.origin + s * map.axis + lateral * left + vertical * map.up;
+}
+
+void measure_manhole(const StationMap& map, const std::vector<const PlateView*>& group,
+                     const GirderStructureOptions& o, Diaphragm& d) {
+  std::vector<Eigen::Vector2d> rim;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& p : v->rim) rim.push_back({p.y(), p.z()});
+  if (static_cast<int>(rim.size()) < o.min_rim_points) {
+    d.manhole_reason = rim.empty() ? "no opening seen in the plate"
+                                   : "too few points on the opening's rim (" + std::to_string(rim.size()) + ")";
+    return;
+  }
+  const std::optional<OutlineFit> fit = fit_manhole_outline(rim);
+  if (!fit) {
+    d.manhole_reason = "the opening's rim could not be fitted";
+    return;
+  }
+  const int directions = rim_directions(rim, fit->center);
+  if (directions < o.min_rim_directions) {
+    d.manhole_reason = "opening seen only in part (" + std::to_string(directions) + " of 8 directions)";
+    return;
+  }
+  if (fit->median_residual_m * 1000.0 > o.max_fit_mm) {
+    d.manhole_reason = "the rim fits neither an ellipse nor a rounded rectangle";
+    return;
+  }
+  Manhole m;
+  m.shape = fit->shape;
+  m.lateral_m = fit->center.x();
+  m.vertical_m = fit->center.y();
+  m.width_m = 2 * fit->half_width_m;
+  m.height_m = 2 * fit->half_height_m;
+  m.corner_radius_m = fit->corner_radius_m;
+  m.fit_rms_mm = fit->median_residual_m * 1000.0;
+  m.rim_points = static_cast<int>(rim.size());
+  m.center = to_world(map, d.station_m, m.lateral_m, m.vertical_m);
+  double wall[4];
+  walls_near(map, d.station_m, 0.6, wall);
+  // Lateral runs towards the left wall (+wall[0]) and away from the right (-wall[1]).
+  m.clearance_m[0] = wall[0] - (m.lateral_m + fit->half_width_m);
+  m.clearance_m[1] = (m.lateral_m - fit->half_width_m) + wall[1];
+  m.clearance_m[2] = wall[2] - (m.vertical_m + fit->half_height_m);
+  m.clearance_m[3] = (m.vertical_m - fit->half_height_m) + wall[3];
+  d.manhole = m;
+}
+
+std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<PlateView>& views,
+                                       const GirderStructureOptions& o) {
+  const Eigen::Vector3d left = map.up.cross(map.axis);
+  std::vector<Diaphragm> out;
+  for (const auto& group : group_views(views, o.plate_gap_m)) {
+    std::vector<double> stations, weights;
+    std::set<int> frames;
+    for (const PlateView* v : group) {
+      frames.insert(v->frame);
+      for (std::size_t i = 0; i < v->samples.size(); ++i) stations.push_back(v->samples[i].x());
+    }
+    Diaphragm d;
+    d.station_m = median(stations);
+    d.area_m2 = plate_area(group, o.cell_m);
+    const Section* sec = section_at(map, d.station_m);
+    const double box = sec && std::isfinite(sec->width_m) && std::isfinite(sec->height_m)
+                           ? sec->width_m * sec->height_m
+                           : kNaN;
+    // A ring where the cross-section steps, or a small face across the axis, is no plate.
+    const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
+    if (d.area_m2 < needed) continue;
+    const Eigen::Vector3d n = plate_normal(group);
+    d.normal = (n.x() * map.axis + n.y() * left + n.z() * map.up).normalized();
+    d.seen_by_frames = static_cast<int>(frames.size());
+    measure_manhole(map, group, o, d);
+    out.push_back(d);
+  }
+  return out;
+}
+
+std::vector<Compartment> find_compartments(const StationMap& map, const std::vector<Diaphragm>& plates,
+                                           const GirderStructureOptions& o) {
+  std::vector<Compartment> out;
+  if (map.stations.empty()) return out;
+  const double step = map.options.station_step_m;
+  std::vector<double> bounds{map.stations.front().station_m - 0.5 * step};
+  for (const Diaphragm& d : plates) bounds.push_back(d.station_m);
+  bounds.push_back(map.stations.back().station_m + 0.5 * step);
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k) {
+    Compartment c;
+    c.from_m = bounds[k];
+    c.to_m = bounds[k + 1];
+    c.closed_from = k > 0;
+    c.closed_to = k + 1 < bounds.size() - 1;
+    if (c.to_m - c.from_m < step) continue;  // a plate at the very end of the observed extent
+    std::vector<double> w, h;
+    const double lo = c.from_m + (c.closed_from ? o.compartment_margin_m : 0.0);
+    const double hi = c.to_m - (c.closed_to ? o.compartment_margin_m : 0.0);
+    int measured = 0;
+    for (const Station& st : map.stations) {
+      if (st.station_m < lo || st.station_m > hi) continue;
+      const bool mw = st.width_source == DimensionSource::Measured;
+      const bool mh = st.height_source == DimensionSource::Measured;
+      if (mw) w.push_back(st.width_m);
+      if (mh) h.push_back(st.height_m);
+      measured += (mw || mh) ? 1 : 0;
+    }
+    c.width_m = median(w);
+    c.height_m = median(h);
+    c.stations_measured = measured;
+    out.push_back(c);
+  }
+  return out;
+}
+
+// The centre of the measured cross-section at every station: where a wall pair was not
+// measured at the station, its centre comes from the nearest station that measured it.
+std::vector<CentrelinePoint> find_centreline(const StationMap& map) {
+  const std::size_t n = map.stations.size();
+  std::vector<double> lat(n, kNaN), ver(n, kNaN);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double* w = map.stations[k].wall_m;
+    if (!std::isnan(w[0]) && !std::isnan(w[1])) lat[k] = 0.5 * (w[0] - w[1]);
+    if (!std::isnan(w[2]) && !std::isnan(w[3])) ver[k] = 0.5 * (w[2] - w[3]);
+  }
+  const auto nearest = [&](const std::vector<double>& v, std::size_t k) {
+    for (std::size_t d = 1; d < n; ++d) {
+      if (k >= d && !std::isnan(v[k - d])) return v[k - d];
+      if (k + d < n && !std::isnan(v[k + d])) return v[k + d];
+    }
+    return kNaN;
+  };
+  std::vector<CentrelinePoint> out;
+  for (std::size_t k = 0; k < n; ++k) {
+    CentrelinePoint c;
+    c.station_m = map.stations[k].station_m;
+    const bool here = !std::isnan(lat[k]) && !std::isnan(ver[k]);
+    const double l = !std::isnan(lat[k]) ? lat[k] : nearest(lat, k);
+    const double v = !std::isnan(ver[k]) ? ver[k] : nearest(ver, k);
+    c.source = here ? "measured" : (std::isnan(l) || std::isnan(v)) ? "reference" : "context";
+    c.point = to_world(map, c.station_m, std::isnan(l) ? 0.0 : l, std::isnan(v) ? 0.0 : v);
+    out.push_back(c);
+  }
+  return out;
+}
+
+// The centre line's point at station `s` (linear between its stations; the reference line
+// beyond them).
+Eigen::Vector3d centreline_at(const StationMap& map, const std::vector<CentrelinePoint>& line, double s) {
+  if (line.empty()) return to_world(map, s, 0.0, 0.0);
+  if (s <= line.front().station_m) return line.front().point + (s - line.front().station_m) * map.axis;
+  if (s >= line.back().station_m) return line.back().point + (s - line.back().station_m) * map.axis;
+  const auto hi = std::lower_bound(line.begin(), line.end(), s,
+                                   [](const CentrelinePoint& c, double v) { return c.station_m < v; });
+  const auto lo = hi - 1;
+  const double f = (s - lo->station_m) / std::max(1e-9, hi->station_m - lo->station_m);
+  return (1 - f) * lo->point + f * hi->point;
+}
+
+}  // namespace
+
+GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
+                                       const GirderStructureOptions& options) {
+  GirderStructure g;
+  g.diaphragms = find_diaphragms(map, views, options);
+  g.compartments = find_compartments(map, g.diaphragms, options);
+  g.centreline = find_centreline(map);
+  for (Diaphragm& d : g.diaphragms) d.point = centreline_at(map, g.centreline, d.station_m);
+  return g;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,83 @@
+#pragma once
+// The structure a climbing robot passes through, from the plates across the tunnel that posed
+// frames saw: diaphragms (any transverse plate large enough to close most of the cross-section)
+// with their manhole openings, the compartments between them, and the centre line of the
+// measured cross-sections. Map coordinates: station along the map's axis, lateral (left) and
+// vertical (up) from its reference line (core/mapping/station_map.h).
+#include <Eigen/Core>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tunnelmap {
+
+struct StationMap;
+
+// One transverse plate as one frame saw it. `samples` and `rim` are in map coordinates
+// (station, lateral, vertical); `weights` are the samples' pixel counts.
+struct PlateView {
+  int frame = 0;
+  std::vector<Eigen::Vector3d> samples;
+  std::vector<double> weights;
+  std::vector<Eigen::Vector3d> rim;  // points on the edge of an opening in it
+};
+
+struct Manhole {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // world frame
+  double lateral_m = 0.0, vertical_m = 0.0;          // centre, map coordinates
+  double width_m = 0.0, height_m = 0.0;
+  std::string shape;          // "ellipse" or "rounded_rectangle"
+  double corner_radius_m = 0.0;  // rounded rectangle only
+  // From the opening's edge to the left, right, top and bottom wall (NaN: wall not measured).
+  double clearance_m[4] = {NAN, NAN, NAN, NAN};
+  double fit_rms_mm = 0.0;    // median distance of the rim points from the fitted outline
+  int rim_points = 0;
+};
+
+struct Diaphragm {
+  double station_m = 0.0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // world: the centre line at the plate
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // world frame, along the axis
+  int seen_by_frames = 0;
+  double area_m2 = 0.0;  // plate area seen (5 cm cells)
+  std::optional<Manhole> manhole;
+  std::string manhole_reason;  // why there is no manhole
+};
+
+// The stretch between two plates (or between a plate and the end of the observed extent).
+struct Compartment {
+  double from_m = 0.0, to_m = 0.0;
+  double width_m = 0.0, height_m = 0.0;  // NaN: not measured in it
+  bool closed_from = false, closed_to = false;  // the end is a plate
+  int stations_measured = 0;
+};
+
+struct CentrelinePoint {
+  double station_m = 0.0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // world frame
+  std::string source;  // "measured" (both wall pairs at the station), "context", "reference"
+};
+
+struct GirderStructureOptions {
+  double plate_gap_m = 0.25;         // views of plates closer than this along the axis are one
+  double min_plate_fraction = 0.3;   // a plate closes at least this part of the cross-section
+  double min_plate_area_m2 = 0.15;   // ... or this much, where the cross-section is unknown
+  double cell_m = 0.05;              // area cells
+  int min_rim_points = 40;
+  int min_rim_directions = 7;        // of 8 around the centre, each with a few rim points
+  double max_fit_mm = 12.0;          // median distance of the rim from the outline
+  double compartment_margin_m = 0.2; // stations this close to a plate do not measure the box
+};
+
+struct GirderStructure {
+  std::vector<Diaphragm> diaphragms;
+  std::vector<Compartment> compartments;
+  std::vector<CentrelinePoint> centreline;
+};
+
+// `map` must be finished (stations, sections, frame). Plates are in station order.
+GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
+                                       const GirderStructureOptions& options = {});
+
+}  // namespace tunnelmap

@@ -1,0 +1,39 @@
+#include "core/sim/sim_girder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tunnelmap::sim {
+
+std::vector<double> diaphragm_stations(const SimConfig& c) {
+  std::vector<double> x = c.diaphragm_x_m;
+  if (!(c.diaphragm_spacing_m > 0.0) || !c.girder_length_m) return x;
+  const double S = c.diaphragm_spacing_m, L = *c.girder_length_m;
+  for (int k = 1; k * S < L - 1e-9; ++k) x.push_back(k * S);
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end(), [](double a, double b) { return b - a < 1e-3; }), x.end());
+  return x;
+}
+
+bool in_opening(const SimConfig& c, double dy, double dz) {
+  if (c.manhole_shape == "rounded_rectangle") {
+    const double hw = 0.5 * c.manhole_width_m, hh = 0.5 * c.manhole_height_m;
+    const double ay = std::abs(dy), az = std::abs(dz);
+    if (ay >= hw || az >= hh) return false;
+    const double r = c.manhole_corner_radius_m;
+    const double qy = ay - (hw - r), qz = az - (hh - r);
+    return qy <= 0.0 || qz <= 0.0 || qy * qy + qz * qz < r * r;
+  }
+  const double ey = dy / (0.5 * c.manhole_width_m);
+  const double ez = dz / (0.5 * c.manhole_height_m);
+  return ey * ey + ez * ez < 1.0;
+}
+
+double opening_weight(double d) {
+  if (d <= 0.5) return 1.0;
+  if (d >= 1.5) return 0.0;
+  const double u = 1.5 - d;  // 1 at 0.5 m, 0 at 1.5 m
+  return u * u * (3.0 - 2.0 * u);
+}
+
+}  // namespace tunnelmap::sim

@@ -1,0 +1,28 @@
+#pragma once
+// Whole-girder helpers of the simulator: where the diaphragms are and what passes through
+// their manhole openings (docs/simulator.md#long-girders).
+#include <vector>
+
+#include "core/sim/sim_config.h"
+
+namespace tunnelmap::sim {
+
+// Stations of the diaphragms: diaphragm_x_m in the order given; with diaphragm_spacing_m also
+// S, 2S, ... short of girder_length_m, and then the union is sorted (duplicates within 1 mm
+// dropped).
+std::vector<double> diaphragm_stations(const SimConfig& config);
+
+// A point of a plate, (dy, dz) from the opening's centre across and up the section, is in the
+// manhole opening (strictly inside its ellipse or rounded rectangle).
+bool in_opening(const SimConfig& config, double dy, double dz);
+
+// Centre height (z above the floor) of the opening in a section of height H.
+inline double opening_centre_z(const SimConfig& config, double section_height_m) {
+  return config.manhole_centre_z_rel * section_height_m;
+}
+
+// Weight of the opening's centre in the camera position of a walk through the openings at
+// `distance_m` from the nearest plate: 1 within 0.5 m, 0 from 1.5 m, smoothstep between.
+double opening_weight(double distance_m);
+
+}  // namespace tunnelmap::sim

@@ -1,0 +1,29 @@
+#pragma once
+// The outline of a manhole from the points of its rim in the plate's plane: an axis-aligned
+// ellipse and a rounded rectangle are both fitted by robust least squares (Ceres), and the one
+// the rim lies closer to is the opening's shape.
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tunnelmap {
+
+struct OutlineFit {
+  std::string shape;                 // "ellipse" or "rounded_rectangle"
+  Eigen::Vector2d center = Eigen::Vector2d::Zero();
+  double half_width_m = 0.0, half_height_m = 0.0;
+  double corner_radius_m = 0.0;      // rounded rectangle only
+  double median_residual_m = 0.0;    // median distance of the rim points from the outline
+  double ellipse_residual_m = 0.0, rectangle_residual_m = 0.0;  // both fits, for the record
+};
+
+// `rim`: (lateral, vertical) points on the opening's edge. nullopt when too few to fit.
+std::optional<OutlineFit> fit_manhole_outline(const std::vector<Eigen::Vector2d>& rim);
+
+// Of 8 directions around `center`, how many hold at least `min_points` rim points: an opening
+// seen only in part cannot be measured.
+int rim_directions(const std::vector<Eigen::Vector2d>& rim, const Eigen::Vector2d& center,
+                   int min_points = 3);
+
+}  // namespace tunnelmap

@@ -1,0 +1,121 @@
+// The girder's structure from a simulated walk through three plates with manholes: plates
+// placed along the axis, their manholes measured, the compartments between them and the centre
+// line, as `map --json` and `map --diaphragms-csv` write them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_runner.h"
+#include "tests/support/io_temp_dir.h"
+
+namespace tunnelmap {
+namespace {
+
+using testing::CliRun;
+using testing::IoTempDir;
+using testing::run_cli;
+using testing::slurp;
+
+const std::string kFieldPreset = std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/field.json";
+
+// Field box girder (0.84 x 1.20 m), diaphragms at x = 3 and 6 m and the preset's manhole plate at
+// 5 m, each with the simulator's elliptic 0.45 x 0.70 m manhole, walked from x = 0.4 to 8.2 m along
+// the centre (through the manholes).
+class GirderWalk : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir = std::make_unique<IoTempDir>();
+    const CliRun sim = run_cli("simulate " + dir->file("walk") +
+                               " --preset field --frames 24 --seed 7 --quiet --diaphragms 3,6"
+                               " --walk 0.4,8.2,12 --walk-pose 0,0.5,0");
+    ASSERT_EQ(sim.exit_code, 0) << sim.err;
+    map = run_cli("map " + dir->file("walk") + " --params " + kFieldPreset + " --json " +
+                  dir->file("map.json") + " --diaphragms-csv " + dir->file("plates.csv"));
+    ASSERT_EQ(map.exit_code, 0) << map.err;
+    doc = nlohmann::json::parse(slurp(dir->file("map.json")));
+    dataset = nlohmann::json::parse(slurp(dir->file("walk/dataset.json")));
+  }
+  static void TearDownTestSuite() { dir.reset(); }
+  // World x of map station s (the walk runs along +X).
+  static double world_x(double s) {
+    return doc["frame"]["origin"][0].get<double>() + s * doc["frame"]["axis"][0].get<double>();
+  }
+  static std::unique_ptr<IoTempDir> dir;
+  static CliRun map;
+  static nlohmann::json doc, dataset;
+};
+std::unique_ptr<IoTempDir> GirderWalk::dir;
+CliRun GirderWalk::map;
+nlohmann::json GirderWalk::doc, GirderWalk::dataset;
+
+TEST_F(GirderWalk, EveryPlateIsFoundWithin20mmAndNoneIsInvented) {
+  const nlohmann::json& plates = doc["diaphragms"];
+  const nlohmann::json& truth = dataset["ground_truth"]["girder"]["diaphragms"];
+  ASSERT_EQ(truth.size(), 3u);  // the field preset's manhole plate at 5 m besides the two diaphragms
+  ASSERT_EQ(plates.size(), truth.size()) << plates.dump(1);
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    EXPECT_NEAR(world_x(plates[k]["station_m"].get<double>()), truth[k]["station_m"].get<double>(), 0.02) << k;
+    EXPECT_NEAR(plates[k]["point"][0].get<double>(), truth[k]["point"][0].get<double>(), 0.02) << k;
+    EXPECT_GT(std::abs(plates[k]["normal"][0].get<double>()), 0.99);
+    EXPECT_GE(plates[k]["seen_by_frames"].get<int>(), 2);
+  }
+}
+
+TEST_F(GirderWalk, ManholesAreMeasuredWithin15mm) {
+  const nlohmann::json& plates = doc["diaphragms"];
+  const nlohmann::json& truth = dataset["ground_truth"]["girder"]["diaphragms"];
+  ASSERT_EQ(plates.size(), truth.size());
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    const nlohmann::json& m = plates[k]["manhole"];
+    const nlohmann::json& t = truth[k]["manhole"];
+    ASSERT_FALSE(m.is_null()) << plates[k].dump(1);
+    EXPECT_EQ(m["shape"], t["shape"]);
+    EXPECT_NEAR(m["width_m"].get<double>(), t["width_m"].get<double>(), 0.015);
+    EXPECT_NEAR(m["height_m"].get<double>(), t["height_m"].get<double>(), 0.015);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(m["center"][c].get<double>(), t["center"][c].get<double>(), 0.015);
+    // Side clearances: (0.84 - 0.45) / 2 from the opening to each wall.
+    EXPECT_NEAR(m["clearance_m"]["left"].get<double>(), 0.195, 0.015);
+    EXPECT_NEAR(m["clearance_m"]["right"].get<double>(), 0.195, 0.015);
+  }
+}
+
+TEST_F(GirderWalk, CompartmentsLieBetweenThePlatesWithTheGirdersCrossSection) {
+  const nlohmann::json& c = doc["compartments"];
+  ASSERT_EQ(c.size(), 4u);  // before, between the three plates, after
+  int closed_and_measured = 0;
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    EXPECT_EQ(c[k]["closed"][0].get<bool>(), k > 0);
+    EXPECT_EQ(c[k]["closed"][1].get<bool>(), k + 1 < c.size());
+    if (k > 0) EXPECT_DOUBLE_EQ(c[k]["from_m"].get<double>(), doc["diaphragms"][k - 1]["station_m"].get<double>());
+    // A dimension no station measured in it stays unknown: null, never a number from elsewhere.
+    if (!c[k]["width_m"].is_null()) EXPECT_NEAR(c[k]["width_m"].get<double>(), 0.84, 0.008);
+    if (!c[k]["height_m"].is_null()) EXPECT_NEAR(c[k]["height_m"].get<double>(), 1.20, 0.008);
+    if (k > 0 && k + 1 < c.size() && !c[k]["width_m"].is_null() && !c[k]["height_m"].is_null())
+      ++closed_and_measured;
+  }
+  EXPECT_GE(closed_and_measured, 1);
+}
+
+TEST_F(GirderWalk, TheCentrelineRunsThroughTheCrossSectionsCentre) {
+  const nlohmann::json& line = doc["centreline"];
+  ASSERT_EQ(line.size(), doc["stations"].size());
+  int measured = 0;
+  for (const auto& p : line) {
+    if (p["source"] != "measured") continue;
+    ++measured;
+    EXPECT_NEAR(p["point"][1].get<double>(), 0.0, 0.01);   // y: the girder is centred on y = 0
+    EXPECT_NEAR(p["point"][2].get<double>(), 0.60, 0.01);  // z: half the height above the floor
+  }
+  EXPECT_GT(measured, static_cast<int>(line.size()) / 2);
+}
+
+TEST_F(GirderWalk, TheDiaphragmCsvHasARowPerPlate) {
+  const std::string csv = slurp(dir->file("plates.csv"));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // header + 3 plates
+  EXPECT_NE(csv.find("ellipse"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tunnelmap
