@@ -33,6 +33,7 @@ struct SimulateOptions {
   std::optional<std::string> drift;  // MM,DEG per sqrt(m)
   std::optional<double> girder, diaphragm_spacing, curve_radius, gradient_pct, cross_fall_deg;
   std::optional<std::string> manhole;  // SHAPE,W,H,CENTRE_Z_REL[,CORNER_R]
+  std::optional<std::string> stiffeners, stiffener_size;  // WALL:POS,...; H,T
   bool quiet = false;
 };
 
@@ -116,6 +117,31 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
       if (shape != "rounded_rectangle") refuse("--manhole: CORNER_R needs rounded_rectangle");
       check("--manhole", "CORNER_R", v[3], 0.0, 0.5 * std::min(v[0], v[1]));
       c.manhole_corner_radius_m = v[3];
+    }
+  }
+  if (o.stiffener_size && !o.stiffeners) refuse("--stiffener-size needs --stiffeners");
+  if (o.stiffeners) {
+    std::string rest = *o.stiffeners;
+    c.stiffeners.clear();
+    for (;;) {
+      const auto comma = rest.find(',');
+      const std::string item = rest.substr(0, comma);
+      const auto colon = item.find(':');
+      SimStiffener st;
+      st.wall = colon == std::string::npos ? -1 : sim_wall_index(item.substr(0, colon));
+      if (st.wall < 0)
+        refuse("--stiffeners: '" + item + "' is not WALL:POSITION with WALL left, right, top or bottom");
+      st.position_m = parse_sim_numbers("--stiffeners", item.substr(colon + 1), 1, "WALL:POSITION")[0];
+      c.stiffeners.push_back(st);
+      if (comma == std::string::npos) break;
+      rest = rest.substr(comma + 1);
+    }
+    if (o.stiffener_size) {
+      const std::vector<double> v = parse_sim_numbers("--stiffener-size", *o.stiffener_size, 2, "H,T");
+      check("--stiffener-size", "H", v[0], 0.01, 0.5);
+      check("--stiffener-size", "T", v[1], 0.002, 0.05);
+      c.stiffener_height_m = v[0];
+      c.stiffener_thickness_m = v[1];
     }
   }
   check("--gradient-pct", o.gradient_pct, -10.0, 10.0);
@@ -278,6 +304,11 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Every plate's opening: SHAPE,W,H,CENTRE_Z_REL[,CORNER_R] with SHAPE ellipse or "
                   "rounded_rectangle (metres; centre height / section height; default "
                   "ellipse,0.45,0.70,0.5; corner radius 0.1)");
+  sub->add_option("--stiffeners", opt->stiffeners,
+                  "Longitudinal flat-bar stiffeners WALL:POS,... (WALL left|right|top|bottom; POS "
+                  "across the wall: height above the floor, or y with left positive; metres)");
+  sub->add_option("--stiffener-size", opt->stiffener_size,
+                  "Stiffener height out of the wall and thickness H,T (metres, default 0.1,0.01)");
   sub->add_option("--curve-radius", opt->curve_radius,
                   "Horizontal curve radius in metres (0 = straight, > 0 left, < 0 right; |R| >= 50)");
   sub->add_option("--gradient-pct", opt->gradient_pct,

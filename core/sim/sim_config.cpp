@@ -167,6 +167,23 @@ void SimConfig::validate() const {
   check_range("rivet_height_m", rivet_height_m, 0.0, rivet_radius_m);
   check_range("rivet_pitch_m", rivet_pitch_m, 2.0 * rivet_radius_m, 1.0);
   check_range("rivet_rows_per_band", rivet_rows_per_band, 0, 10);
+  if (stiffeners.size() > 40)
+    throw ParameterError("simulator: " + std::to_string(stiffeners.size()) +
+                         " stiffeners is too many (at most 40)");
+  if (!stiffeners.empty()) {
+    check_range("stiffener_height_m", stiffener_height_m, 0.01, 0.3 * min_side);
+    check_range("stiffener_thickness_m", stiffener_thickness_m, 0.002, 0.05);
+  }
+  for (const SimStiffener& st : stiffeners) {
+    if (st.wall < 0 || st.wall > 3)
+      throw ParameterError("simulator: stiffener wall " + std::to_string(st.wall) +
+                           " is not 0-3 (left, right, top, bottom)");
+    // Across the wall, clear of its corners in the smallest section.
+    const double half = st.wall < 2 ? 0.5 * min_h : 0.5 * min_w;
+    const double lo = st.wall < 2 ? 0.0 : -half, hi = st.wall < 2 ? 2.0 * half : half;
+    check_range("stiffener position_m", st.position_m, lo + stiffener_thickness_m,
+                hi - stiffener_thickness_m);
+  }
   check_range("rust_patches_per_wall", rust_patches_per_wall, 0, 100);
   check_range("rust_roughness_m", rust_roughness_m, 0.0, 0.02);
   check_range("rust_dropout", rust_dropout, 0.0, 1.0);

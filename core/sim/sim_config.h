@@ -42,9 +42,22 @@ struct SimWalk {
   bool through_openings = false;
 };
 
+// A longitudinal stiffener: a flat bar along a wall (docs/simulator.md#longitudinal-stiffeners)
+// centred at `position_m` across it: the height above the floor on the left and right walls,
+// y (left positive) on the roof and the floor.
+struct SimStiffener {
+  int wall = 0;  // SimWall
+  double position_m = 0.5;
+};
+
 // Wall order used for per-wall arrays: left (y = +W/2), right (y = -W/2), top (z = H),
 // bottom (z = 0).
 enum SimWall { kSimLeft = 0, kSimRight = 1, kSimTop = 2, kSimBottom = 3 };
+// "left" -> kSimLeft, ...; -1 for other names.
+inline int sim_wall_index(const std::string& name) {
+  return name == "left" ? kSimLeft : name == "right" ? kSimRight : name == "top" ? kSimTop
+       : name == "bottom" ? kSimBottom : -1;
+}
 
 // Default-constructed = the lab preset.
 struct SimConfig {
@@ -101,6 +114,11 @@ struct SimConfig {
   double rivet_height_m = 0.006;
   double rivet_pitch_m = 0.070;
   int rivet_rows_per_band = 2;
+  // Longitudinal stiffeners: flat bars standing stiffener_height_m out of the wall's surface
+  // (edge band or middle plate), stiffener_thickness_m thick, along every section.
+  std::vector<SimStiffener> stiffeners;
+  double stiffener_height_m = 0.10;
+  double stiffener_thickness_m = 0.010;
   // Rust: elliptic patches per wall with roughness and extra dropout.
   int rust_patches_per_wall = 2;
   double rust_roughness_m = 0.001;  // amplitude of the surface relief on rust

@@ -1,5 +1,7 @@
 #include "core/sim/sim_config_json.h"
 
+#include <algorithm>
+
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -47,6 +49,15 @@ json sim_config_to_json(const SimConfig& c) {
   j["rivet_height_m"] = c.rivet_height_m;
   j["rivet_pitch_m"] = c.rivet_pitch_m;
   j["rivet_rows_per_band"] = c.rivet_rows_per_band;
+  if (!c.stiffeners.empty()) {
+    static const char* kWalls[4] = {"left", "right", "top", "bottom"};
+    json st = json::array();
+    for (const SimStiffener& s : c.stiffeners)
+      st.push_back({{"wall", kWalls[std::clamp(s.wall, 0, 3)]}, {"position_m", s.position_m}});
+    j["stiffeners"] = st;
+    j["stiffener_height_m"] = c.stiffener_height_m;
+    j["stiffener_thickness_m"] = c.stiffener_thickness_m;
+  }
   j["rust_patches_per_wall"] = c.rust_patches_per_wall;
   j["rust_roughness_m"] = c.rust_roughness_m;
   j["rust_dropout"] = c.rust_dropout;
@@ -163,6 +174,19 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "rivet_height_m", c.rivet_height_m);
     read(j, "rivet_pitch_m", c.rivet_pitch_m);
     read(j, "rivet_rows_per_band", c.rivet_rows_per_band);
+    if (j.contains("stiffeners")) {
+      c.stiffeners.clear();
+      for (const json& s : j.at("stiffeners")) {
+        SimStiffener st;
+        const std::string wall = s.at("wall").get<std::string>();
+        st.wall = sim_wall_index(wall);
+        if (st.wall < 0) throw InputError(source, "stiffener wall '" + wall + "' is not left, right, top or bottom");
+        st.position_m = s.at("position_m").get<double>();
+        c.stiffeners.push_back(st);
+      }
+    }
+    read(j, "stiffener_height_m", c.stiffener_height_m);
+    read(j, "stiffener_thickness_m", c.stiffener_thickness_m);
     read(j, "rust_patches_per_wall", c.rust_patches_per_wall);
     read(j, "rust_roughness_m", c.rust_roughness_m);
     read(j, "rust_dropout", c.rust_dropout);

@@ -149,6 +149,16 @@ json girder_json(const TunnelSimulator& sim, double lo, double hi) {
             {"diaphragms", plates},
             {"compartments", rooms}};
   if (c.girder_length_m) g["length_m"] = *c.girder_length_m;
+  if (!c.stiffeners.empty()) {
+    static const char* kWalls[4] = {"left", "right", "top", "bottom"};
+    json st = json::array();
+    for (const SimStiffener& s : c.stiffeners)
+      st.push_back({{"wall", kWalls[s.wall]},
+                    {"position_m", s.position_m},
+                    {"height_m", c.stiffener_height_m},
+                    {"thickness_m", c.stiffener_thickness_m}});
+    g["stiffeners"] = st;
+  }
   return g;
 }
 
@@ -172,7 +182,8 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
   json robot_json;  // null without an arm
   // The girder's truth: with any layout feature (the constant tunnel keeps its bytes).
   const bool girder = !config.sections.empty() || !sim::diaphragm_stations(config).empty() ||
-                      config.walk || config.girder_length_m || config.curved();
+                      config.walk || config.girder_length_m || config.curved() ||
+                      !config.stiffeners.empty();
   double first_x = 0.0, min_x = 0.0, max_x = 0.0;  // camera x of the rendered frames
   for (int i = 0; i < sim.frame_count(); ++i) {
     const SimFrame f = sim.render(i);

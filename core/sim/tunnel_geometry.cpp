@@ -172,6 +172,26 @@ void TunnelGeometry::build_section(int k, double from_x, double to_x, double W, 
     surfaces_.push_back(make_surface(w.step_hi_id, specs[i].name, std::string("step_") + specs[i].hi,
                                      "step", w.es, -w.s_mid_hi));
   }
+  // Stiffeners after the steps, so the ids above stay as they were without them.
+  for (std::size_t j = 0; j < config_.stiffeners.size(); ++j) {
+    const SimStiffener& st = config_.stiffeners[j];
+    Wall& w = sec.walls[st.wall];
+    const double half = 0.5 * config_.stiffener_thickness_m;
+    const bool on_plate = st.position_m > w.s_mid_lo && st.position_m < w.s_mid_hi;
+    Wall::Bar b{st.position_m - half, st.position_m + half,
+                (on_plate ? w.thickness : 0.0) + config_.stiffener_height_m, 0, 0, 0};
+    const std::string part = "stiffener" + std::to_string(j);
+    b.top_id = next_id++;
+    surfaces_.push_back(make_surface(b.top_id, specs[st.wall].name, part + "/top", "stiffener",
+                                     w.n, w.d_outer - b.top));
+    b.lo_id = next_id++;
+    surfaces_.push_back(make_surface(b.lo_id, specs[st.wall].name, part + "/side_" + specs[st.wall].lo,
+                                     "stiffener", -w.es, b.s_lo));
+    b.hi_id = next_id++;
+    surfaces_.push_back(make_surface(b.hi_id, specs[st.wall].name, part + "/side_" + specs[st.wall].hi,
+                                     "stiffener", w.es, -b.s_hi));
+    w.bars.push_back(b);
+  }
   for (std::size_t i = first_surface; i < surfaces_.size(); ++i) surfaces_[i].section = k;
   sections_.push_back(std::move(sec));
 }
@@ -419,7 +439,10 @@ void TunnelGeometry::cast_sections(const Eigen::Vector3d& o, const Eigen::Vector
   const int step = r.x() > 1e-12 ? 1 : r.x() < -1e-12 ? -1 : 0;
   for (;;) {
     const Section& sec = sections_[k];
-    for (const Wall& w : sec.walls) cast_wall(sec, k, w, o, r, t_min, best);
+    for (const Wall& w : sec.walls) {
+      cast_wall(sec, k, w, o, r, t_min, best);
+      if (!w.bars.empty()) cast_bars(sec, k, w, o, r, t_min, best);
+    }
     const int next = k + step;
     if (step == 0 || next < 0 || next >= n) return;
     const double xj = step > 0 ? sec.to_x : sec.from_x;
@@ -559,6 +582,51 @@ void TunnelGeometry::cast_rivets(const Section& sec, int k, const Wall& w,
       best.rivet = true;
       best.sphere_center = c;
       best.sphere_radius = R;
+    }
+  }
+}
+
+void TunnelGeometry::cast_bars(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
+                               const Eigen::Vector3d& r, double t_min, RayHit& best) const {
+  // Each bar is a slab in (height above the outer plane, s across the wall): the ray enters
+  // it through the top face or a side face, whichever slab it enters last.
+  const double h0 = w.n.dot(o) + w.d_outer, dn = w.n.dot(r);
+  const double so = w.es.dot(o), sr = w.es.dot(r);
+  for (const Wall::Bar& b : w.bars) {
+    double h_in = -std::numeric_limits<double>::infinity(), h_out = -h_in;
+    if (std::abs(dn) > 1e-12) {
+      const double ta = -h0 / dn, tb = (b.top - h0) / dn;
+      h_in = std::min(ta, tb), h_out = std::max(ta, tb);
+    } else if (h0 < 0.0 || h0 > b.top) {
+      continue;
+    }
+    double s_in = -std::numeric_limits<double>::infinity(), s_out = -s_in;
+    if (std::abs(sr) > 1e-12) {
+      const double ta = (b.s_lo - so) / sr, tb = (b.s_hi - so) / sr;
+      s_in = std::min(ta, tb), s_out = std::max(ta, tb);
+    } else if (so < b.s_lo || so > b.s_hi) {
+      continue;
+    }
+    const double t = std::max(h_in, s_in);
+    if (t > std::min(h_out, s_out) || t <= t_min || t >= best.t) continue;
+    if (!sec.contains_x(o.x() + t * r.x())) continue;
+    best = RayHit{};
+    best.t = t;
+    best.wall = w.index;
+    best.section = k;
+    best.point = o + t * r;
+    if (h_in >= s_in) {
+      best.surface_id = b.top_id;
+      best.normal = w.n;
+      best.plane_offset = w.d_outer - b.top;
+    } else if (sr > 0.0) {
+      best.surface_id = b.lo_id;
+      best.normal = -w.es;
+      best.plane_offset = b.s_lo;
+    } else {
+      best.surface_id = b.hi_id;
+      best.normal = w.es;
+      best.plane_offset = -b.s_hi;
     }
   }
 }

@@ -3,7 +3,7 @@
 // World frame: X along the tunnel axis, Y to the left, Z up. Outer (edge-band) surfaces at
 // y = +-W/2, z = 0 and z = H. Each wall: edge band | middle plate (protruding inward by its
 // thickness) | edge band; the small faces where a plate steps down to an edge band are
-// surfaces too (zone "step"). Rivets are spherical-cap domes on the edge bands. An optional
+// surfaces too (zone "step"); longitudinal stiffeners are flat bars (zone "stiffener"). Rivets are spherical-cap domes on the edge bands. An optional
 // manhole plate (transverse, with an elliptic opening) and an optional end wall close the view.
 // With sections, every section has its own walls (and ids), cut at the joints, where the part
 // of the transverse plane between the two cross-sections is a surface of its own; diaphragms
@@ -101,6 +101,11 @@ class TunnelGeometry {
     double thickness;
     int edge_lo_id, middle_id, edge_hi_id, step_lo_id, step_hi_id;
     std::vector<double> rivet_row_s, rivet_row_phase;
+    struct Bar {  // longitudinal stiffener: s in [s_lo, s_hi], height 0..top above the outer plane
+      double s_lo, s_hi, top;
+      int top_id, lo_id, hi_id;
+    };
+    std::vector<Bar> bars;
   };
   struct Section {
     double from_x, to_x;  // [from_x, to_x): the walls' extent along X
@@ -139,6 +144,8 @@ class TunnelGeometry {
                    const Eigen::Vector3d& r, double h0, double dn, double t_min,
                    RayHit& best) const;
   void cast_plates(const Eigen::Vector3d& o, const Eigen::Vector3d& r, RayHit& best) const;
+  void cast_bars(const Section& sec, int k, const Wall& w, const Eigen::Vector3d& o,
+                 const Eigen::Vector3d& r, double t_min, RayHit& best) const;
   double value_noise(int wall, double x, double s, double cell) const;
 
   SimConfig config_;

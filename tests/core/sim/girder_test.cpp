@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -716,6 +717,85 @@ TEST(SimNoiseTest, TimeOfFlightNoiseIsLinearInDepthUnquantisedWithFlyingPixels) 
   std::ifstream in(dir / "dataset.json");
   EXPECT_EQ(json::parse(in).at("simulator").at("noise_model"), "tof");
   fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Longitudinal stiffeners
+
+TEST(SimStiffenerTest, FlatBarsStandOutOfTheWallsAndTheirPixelsLieOnTheirFaces) {
+  SimConfig c = exact(SimConfig::from_preset("lab"));  // 0.82 x 1.30 m, plates 8 mm
+  c.frames = 1;
+  c.poses = {{0.0, 0.5, 0.0, 0.0, 0.0}};
+  c.jitter_translation_m = 0.0;
+  c.jitter_rotation_deg = 0.0;
+  // On the left middle plate, on the floor's middle plate, on the roof's left edge band.
+  c.stiffeners = {{kSimLeft, 0.65}, {kSimBottom, 0.0}, {kSimTop, 0.3}};
+  const TunnelSimulator sim(c);
+  // Across to the left wall at the bar's height: its top face 8 mm + 0.1 m out of the wall.
+  sim::RayHit h = cast(sim, {1.0, 0.0, 0.65}, {0, 1, 0});
+  EXPECT_EQ(wall_of(sim, h.surface_id), "left/stiffener0/top");
+  EXPECT_NEAR(h.t, 0.41 - 0.108, 1e-12);
+  h = cast(sim, {1.0, 0.0, 0.80}, {0, 1, 0});  // above it: the plate
+  EXPECT_EQ(wall_of(sim, h.surface_id), "left/middle");
+  h = cast(sim, {1.0, 0.35, 0.9}, {0, 0, -1});  // down along the wall: the bar's upper side
+  EXPECT_EQ(wall_of(sim, h.surface_id), "left/stiffener0/side_top");
+  EXPECT_NEAR(h.point.z(), 0.655, 1e-12);
+  h = cast(sim, {1.0, 0.30, 0.6}, {0, 0, 1});  // up to the roof's edge band: a bar of 0.1 m
+  EXPECT_EQ(wall_of(sim, h.surface_id), "top/stiffener2/top");
+  EXPECT_NEAR(h.point.z(), 1.30 - 0.10, 1e-12);
+  // Rendered: every bar is seen, every pixel on its face's plane.
+  const SimFrame f = sim.render(0);
+  std::map<std::string, int> count;
+  double worst = 0.0;
+  for (int v = 0; v < f.frame.height; ++v)
+    for (int u = 0; u < f.frame.width; ++u) {
+      const SimSurface* s = sim.surface(f.surface_id[v * f.frame.width + u]);
+      if (!s || s->zone != "stiffener" || f.frame.depth_m(u, v) <= 0.0f) continue;
+      const Eigen::Vector3d p = *f.frame.pose * f.frame.intrinsics.backproject(u, v, f.frame.depth_m(u, v)).cast<double>();
+      worst = std::max(worst, std::abs(s->distance(p)));
+      ++count[s->name.substr(0, s->name.find("/", s->name.find("stiffener")))];
+    }
+  for (const char* bar : {"left/stiffener0", "bottom/stiffener1", "top/stiffener2"})
+    EXPECT_GT(count[bar], 300) << bar;
+  EXPECT_LT(worst, 0.0006);
+  // Without stiffeners the ids of the constant tunnel are unchanged; with them they follow.
+  EXPECT_EQ(sim.surfaces()[19].name, "bottom/step_left");
+  EXPECT_EQ(sim.surfaces()[20].name, "left/stiffener0/top");
+  // Settings round trip; validation.
+  const SimConfig back = sim_config_from_json(sim_config_to_json(c), "test");
+  ASSERT_EQ(back.stiffeners.size(), 3u);
+  EXPECT_EQ(back.stiffeners[2].wall, kSimTop);
+  EXPECT_EQ(back.stiffeners[2].position_m, 0.3);
+  SimConfig bad = c;
+  bad.stiffeners = {{kSimLeft, 1.5}};
+  EXPECT_THROW(bad.validate(), ParameterError);
+  // CLI.
+  const fs::path dir = fresh_dir("cli_stiffeners");
+  std::string err;
+  EXPECT_EQ(run_cli_err("simulate " + dir.string() +
+                            " --frames 1 --walk 0,0,1 --stiffeners left:0.65,right:0.4"
+                            " --stiffener-size 0.12,0.012 --quiet",
+                        err),
+            0)
+      << err;
+  std::ifstream in(dir / "dataset.json");
+  const json j = json::parse(in);
+  const json& st = j.at("ground_truth").at("girder").at("stiffeners");
+  ASSERT_EQ(st.size(), 2u);
+  EXPECT_EQ(st[1].at("wall"), "right");
+  EXPECT_EQ(st[1].at("height_m").get<double>(), 0.12);
+  fs::remove_all(dir);
+  for (const auto& [args, flag] : std::vector<std::pair<std::string, std::string>>{
+           {"--stiffeners middle:0.5", "--stiffeners"},
+           {"--stiffeners left:x", "--stiffeners"},
+           {"--stiffeners left:0.5 --stiffener-size 0.1", "--stiffener-size"},
+           {"--stiffener-size 0.1,0.01", "--stiffener-size"},
+           {"--stiffeners left:2", "stiffener position_m"}}) {
+    EXPECT_EQ(run_cli_err("simulate " + dir.string() + " " + args, err), 2) << args;
+    EXPECT_NE(err.find(flag), std::string::npos) << args << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
+  }
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 }  // namespace
