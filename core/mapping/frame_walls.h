@@ -56,8 +56,10 @@ struct FrameWallsOptions {
   double max_inset_m = 0.03;
   // A plate pixel is on an opening's rim when, within `rim_search_px` past the plate's edge,
   // the view lands at least `see_through_m` farther (through the opening, not on a wall).
+  // Past the labels, pixels within `rim_on_plate_m` of the plate's plane are still the plate.
   double see_through_m = 0.15;
-  int rim_search_px = 4;
+  double rim_on_plate_m = 0.01;
+  int rim_search_px = 6;
   int max_rim_points_per_plate = 800;
 };
 

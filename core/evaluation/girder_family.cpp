@@ -1,0 +1,104 @@
+#include "core/evaluation/girder_family.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace tunnelmap {
+
+namespace {
+
+class Draw {
+ public:
+  explicit Draw(unsigned seed) : rng_(seed) {}
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  bool chance(double p) { return uniform(0.0, 1.0) < p; }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  unsigned seed() { return static_cast<unsigned>(rng_()); }
+
+ private:
+  std::mt19937 rng_;
+};
+
+// 2-3 sections whose widths and heights step by 15-40 mm, over the girder's length.
+void draw_sections(Draw& d, double length, double width, double height, SimConfig& c) {
+  const int n = d.integer(2, 3);
+  double w = width, h = height;
+  for (int k = 0; k < n; ++k) {
+    SimSection s;
+    s.length_m = length / n;
+    s.width_m = w;
+    s.height_m = h;
+    c.sections.push_back(s);
+    const double sign = d.chance(0.5) ? 1.0 : -1.0;
+    if (d.chance(0.5)) w += sign * d.uniform(0.015, 0.04);
+    else h += sign * d.uniform(0.015, 0.04);
+  }
+  c.sections_start_x_m = 0.0;
+}
+
+void draw_manhole(Draw& d, double width, double height, SimConfig& c) {
+  c.manhole_shape = d.chance(0.5) ? "ellipse" : "rounded_rectangle";
+  c.manhole_width_m = std::min(d.uniform(0.40, 0.60), width - 0.2);
+  c.manhole_height_m = std::min(d.uniform(0.60, 0.85), height - 0.3);
+  c.manhole_corner_radius_m = d.uniform(0.05, 0.4) * std::min(c.manhole_width_m, c.manhole_height_m);
+  c.manhole_centre_z_rel = d.uniform(0.42, 0.55);
+}
+
+}  // namespace
+
+std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRanges& r) {
+  Draw d(seed);
+  std::vector<GirderDraw> out;
+  for (int i = 0; i < count; ++i) {
+    GirderDraw g;
+    g.index = i;
+    SimConfig& c = g.config;
+    c = SimConfig::from_preset(d.chance(0.5) ? "lab" : "field");
+    c.seed = d.seed();
+    const double length = d.uniform(r.min_length_m, r.max_length_m);
+    const double width = d.uniform(r.min_width_m, r.max_width_m);
+    const double height = d.uniform(r.min_height_m, r.max_height_m);
+    c.width_m = width;
+    c.height_m = height;
+    c.girder_length_m = length;
+    c.diaphragm_spacing_m = d.uniform(r.min_spacing_m, r.max_spacing_m);
+    g.constant_section = !d.chance(r.sectioned_fraction);
+    if (!g.constant_section) draw_sections(d, length, width, height, c);
+    draw_manhole(d, width, height, c);
+    const bool curved = d.chance(r.curved_fraction);
+    if (curved) {
+      c.curve_radius_m = (d.chance(0.5) ? 1 : -1) * d.uniform(r.min_radius_m, r.max_radius_m);
+      c.gradient_pct = d.uniform(-r.max_gradient_pct, r.max_gradient_pct);
+      c.cross_fall_deg = d.uniform(-r.max_cross_fall_deg, r.max_cross_fall_deg);
+    }
+    c.noise_model = d.chance(0.7) ? "structured_light" : "tof";
+    c.noise_scale = d.uniform(0.7, 1.3);
+    g.drifted = d.chance(r.drifted_fraction);
+    if (g.drifted) {
+      c.drift_translation_mm_per_sqrt_m = r.drift_translation_mm_per_sqrt_m;
+      c.drift_rotation_deg_per_sqrt_m = r.drift_rotation_deg_per_sqrt_m;
+    }
+    const double stop = d.uniform(r.min_stop_spacing_m, r.max_stop_spacing_m);
+    SimWalk walk;
+    walk.start_x_m = 0.4;
+    walk.end_x_m = length - 1.0;
+    walk.stops = std::max(2, static_cast<int>(std::lround((walk.end_x_m - walk.start_x_m) / stop)) + 1);
+    walk.pose = {d.uniform(-0.1, 0.1), d.uniform(0.4, 0.6), 0.0, d.uniform(-4, 4), d.uniform(-4, 4)};
+    walk.through_openings = true;
+    c.walk = walk;
+    c.frames = walk.stops * r.frames_per_stop;
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%.1f m, %.3f x %.3f m%s, plates every %.2f m, %s %.2f x %.2f m, %s%s",
+                  length, width, height, g.constant_section ? "" : " (sections)",
+                  c.diaphragm_spacing_m, c.manhole_shape.c_str(), c.manhole_width_m,
+                  c.manhole_height_m, curved ? ("R " + std::to_string(std::lround(c.curve_radius_m)) + " m, ").c_str() : "",
+                  g.drifted ? "drift" : "exact poses");
+    g.summary = buf;
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,222 @@
+#include "core/evaluation/girder_protocol.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "core/io/dataset.h"
+#include "core/mapping/dataset_mapping.h"
+#include "core/pipeline/pipeline.h"
+#include "core/sim/sim_dataset_writer.h"
+
+namespace tunnelmap {
+
+namespace {
+
+// mean, p95 and worst of |v|, and the signed mean (a bias); nulls when empty.
+nlohmann::json distribution(std::vector<double> v) {
+  if (v.empty()) return {{"n", 0}, {"mean", nullptr}, {"p95", nullptr}, {"worst", nullptr}, {"bias", nullptr}};
+  double signed_sum = 0, sum = 0;
+  for (double& x : v) signed_sum += x, x = std::abs(x), sum += x;
+  std::sort(v.begin(), v.end());
+  const std::size_t i95 = static_cast<std::size_t>(std::ceil(0.95 * v.size())) - 1;
+  const auto r = [](double x) { return std::round(x * 1000) / 1000; };
+  return {{"n", v.size()}, {"mean", r(sum / v.size())}, {"p95", r(v[i95])}, {"worst", r(v.back())},
+          {"bias", r(signed_sum / v.size())}};
+}
+
+void append(std::vector<double>& to, const std::vector<double>& from) { to.insert(to.end(), from.begin(), from.end()); }
+
+GirderResult run_one(const GirderDraw& draw, const GirderProtocolOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(o.work_dir) / ("girder-" + std::to_string(draw.index));
+  fs::remove_all(dir);
+  write_sim_dataset(dir.string(), draw.config);
+  const Dataset ds = read_dataset(dir.string());
+  Parameters params;
+  params.load_json_file(o.presets_dir + "/" + draw.config.preset + ".json");
+  params.set_from_strings(o.overrides);
+  Pipeline pipeline(params);
+  const DatasetMapping dm = map_dataset(ds, pipeline, o.refine_poses);
+  GirderResult r;
+  r.draw = draw;
+  r.frames = static_cast<int>(ds.frames.size());
+  r.score = score_girder(dm, ds.ground_truth, ds.raw["frames"]);
+  fs::remove_all(dir);
+  return r;
+}
+
+nlohmann::json girder_json(const GirderResult& r) {
+  const GirderScore& s = r.score;
+  return {{"index", r.draw.index},
+          {"seed", r.draw.config.seed},
+          {"summary", r.draw.summary},
+          {"constant_section", r.draw.constant_section},
+          {"drifted", r.draw.drifted},
+          {"frames", r.frames},
+          {"width_error_mm", distribution(s.width_error_mm)},
+          {"height_error_mm", distribution(s.height_error_mm)},
+          {"sections", {{"true", s.sections_true}, {"found", s.sections_found}, {"phantom", s.phantom_sections}}},
+          {"joints", {{"true", s.joints_true}, {"found", s.joints_found}}},
+          {"plates",
+           {{"true", s.plates_true}, {"within_tolerance", s.plates_matched}, {"missed", s.plates_missed},
+            {"invented", s.plates_invented}, {"error_mm", distribution(s.plate_error_mm)}}},
+          {"manholes",
+           {{"width_error_mm", distribution(s.manhole_width_error_mm)},
+            {"height_error_mm", distribution(s.manhole_height_error_mm)},
+            {"unmeasured", s.manholes_unmeasured}}},
+          {"correction_mm", distribution(s.correction_mm)},
+          {"correction_deg", distribution(s.correction_deg)},
+          {"pose_error_mm", distribution(s.pose_error_mm)},
+          {"pose_error_deg", distribution(s.pose_error_deg)},
+          {"ms_per_frame", std::round(s.ms_per_frame * 100) / 100}};
+}
+
+// The family's distributions over the girders with `drifted` poses.
+nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
+  std::vector<double> w, h, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, ms;
+  int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, plates = 0, matched = 0,
+      missed = 0, invented = 0, unmeasured = 0;
+  for (const GirderResult& r : results) {
+    if (r.draw.drifted != drifted) continue;
+    const GirderScore& s = r.score;
+    ++girders;
+    append(w, s.width_error_mm), append(h, s.height_error_mm), append(plate, s.plate_error_mm);
+    append(mw, s.manhole_width_error_mm), append(mh, s.manhole_height_error_mm);
+    append(corr_mm, s.correction_mm), append(corr_deg, s.correction_deg);
+    append(pose_mm, s.pose_error_mm), append(pose_deg, s.pose_error_deg);
+    ms.push_back(s.ms_per_frame);
+    if (r.draw.constant_section) ++constant, phantom += s.phantom_sections > 0 ? 1 : 0;
+    joints += s.joints_true, joints_found += s.joints_found;
+    plates += s.plates_true, matched += s.plates_matched, missed += s.plates_missed;
+    invented += s.plates_invented, unmeasured += s.manholes_unmeasured;
+  }
+  return {{"girders", girders},
+          {"width_error_mm", distribution(w)},
+          {"height_error_mm", distribution(h)},
+          {"constant_section_girders", constant},
+          {"girders_with_phantom_sections", phantom},
+          {"joints", {{"true", joints}, {"found", joints_found}}},
+          {"plates", {{"true", plates}, {"within_tolerance", matched}, {"missed", missed}, {"invented", invented},
+                      {"error_mm", distribution(plate)}}},
+          {"manhole_width_error_mm", distribution(mw)},
+          {"manhole_height_error_mm", distribution(mh)},
+          {"manholes_unmeasured", unmeasured},
+          {"correction_mm", distribution(corr_mm)},
+          {"correction_deg", distribution(corr_deg)},
+          {"pose_error_mm", distribution(pose_mm)},
+          {"pose_error_deg", distribution(pose_deg)},
+          {"ms_per_frame", distribution(ms)}};
+}
+
+std::string cell(const nlohmann::json& d) {
+  if (d["n"].get<int>() == 0) return "–";
+  std::ostringstream s;
+  s << d["mean"].get<double>() << " / " << d["p95"].get<double>() << " / " << d["worst"].get<double>();
+  return s.str();
+}
+
+}  // namespace
+
+std::vector<GirderResult> run_girders(const GirderProtocolOptions& o) {
+  std::vector<GirderResult> out;
+  for (const GirderDraw& d : draw_girders(o.count, o.seed, o.ranges)) {
+    out.push_back(run_one(d, o));
+    if (o.progress) {
+      const GirderScore& s = out.back().score;
+      std::ostringstream line;
+      line << "girder " << d.index << ": " << d.summary << "; " << s.sections_found << " section(s) of "
+           << s.sections_true << ", plates " << s.plates_matched << "/" << s.plates_true << " (+"
+           << s.plates_invented << " invented)";
+      o.progress(line.str());
+    }
+  }
+  return out;
+}
+
+nlohmann::json girders_json(const std::vector<GirderResult>& results, const GirderProtocolOptions& o) {
+  const GirderRanges& r = o.ranges;
+  nlohmann::json girders = nlohmann::json::array();
+  for (const GirderResult& g : results) girders.push_back(girder_json(g));
+  return {{"protocol", "girders"},
+          {"count", o.count},
+          {"seed", o.seed},
+          {"pose_refinement", o.refine_poses},
+          {"ranges",
+           {{"length_m", {r.min_length_m, r.max_length_m}},
+            {"diaphragm_spacing_m", {r.min_spacing_m, r.max_spacing_m}},
+            {"width_m", {r.min_width_m, r.max_width_m}},
+            {"height_m", {r.min_height_m, r.max_height_m}},
+            {"sectioned_fraction", r.sectioned_fraction},
+            {"curved_fraction", r.curved_fraction},
+            {"radius_m", {r.min_radius_m, r.max_radius_m}},
+            {"max_gradient_pct", r.max_gradient_pct},
+            {"max_cross_fall_deg", r.max_cross_fall_deg},
+            {"drifted_fraction", r.drifted_fraction},
+            {"drift", {{"translation_mm_per_sqrt_m", r.drift_translation_mm_per_sqrt_m},
+                       {"rotation_deg_per_sqrt_m", r.drift_rotation_deg_per_sqrt_m}}},
+            {"stop_spacing_m", {r.min_stop_spacing_m, r.max_stop_spacing_m}}}},
+          {"girders", girders},
+          {"distributions", {{"exact_poses", family(results, false)}, {"drifted_poses", family(results, true)}}}};
+}
+
+std::string girders_markdown(const nlohmann::json& report) {
+  std::ostringstream s;
+  s << "# Whole-girder evaluation\n\n"
+    << report["count"] << " random girders, seed " << report["seed"]
+    << " (`tunnelmap-cli evaluate --protocol girders --count " << report["count"] << " --seed "
+    << report["seed"] << "`). Cells: mean / p95 / worst of the absolute error.\n\n"
+    << "| measure | exact poses | drifted poses |\n|---|---|---|\n";
+  const nlohmann::json& e = report["distributions"]["exact_poses"];
+  const nlohmann::json& d = report["distributions"]["drifted_poses"];
+  const auto row = [&](const std::string& name, const std::string& a, const std::string& b) {
+    s << "| " << name << " | " << a << " | " << b << " |\n";
+  };
+  row("girders", std::to_string(e["girders"].get<int>()), std::to_string(d["girders"].get<int>()));
+  row("station width error (mm)", cell(e["width_error_mm"]), cell(d["width_error_mm"]));
+  row("station height error (mm)", cell(e["height_error_mm"]), cell(d["height_error_mm"]));
+  const auto phantom = [](const nlohmann::json& f) {
+    return std::to_string(f["girders_with_phantom_sections"].get<int>()) + " of " +
+           std::to_string(f["constant_section_girders"].get<int>());
+  };
+  row("constant girders with a phantom section", phantom(e), phantom(d));
+  const auto joints = [](const nlohmann::json& f) {
+    return std::to_string(f["joints"]["found"].get<int>()) + " of " + std::to_string(f["joints"]["true"].get<int>());
+  };
+  row("joints found within 0.2 m", joints(e), joints(d));
+  const auto plates = [](const nlohmann::json& f) {
+    const nlohmann::json& p = f["plates"];
+    return std::to_string(p["within_tolerance"].get<int>()) + " of " + std::to_string(p["true"].get<int>()) +
+           " within 20 mm; " + std::to_string(p["missed"].get<int>()) + " missed, " +
+           std::to_string(p["invented"].get<int>()) + " invented";
+  };
+  row("plates", plates(e), plates(d));
+  row("plate position error (mm)", cell(e["plates"]["error_mm"]), cell(d["plates"]["error_mm"]));
+  row("manhole width error (mm)", cell(e["manhole_width_error_mm"]), cell(d["manhole_width_error_mm"]));
+  row("manhole height error (mm)", cell(e["manhole_height_error_mm"]), cell(d["manhole_height_error_mm"]));
+  row("manholes not measured", std::to_string(e["manholes_unmeasured"].get<int>()),
+      std::to_string(d["manholes_unmeasured"].get<int>()));
+  row("pose correction (mm)", cell(e["correction_mm"]), cell(d["correction_mm"]));
+  row("pose correction (deg)", cell(e["correction_deg"]), cell(d["correction_deg"]));
+  row("pose error after alignment (mm)", cell(e["pose_error_mm"]), cell(d["pose_error_mm"]));
+  row("pose error after alignment (deg)", cell(e["pose_error_deg"]), cell(d["pose_error_deg"]));
+  row("detection + map (ms per frame)", cell(e["ms_per_frame"]), cell(d["ms_per_frame"]));
+  s << "\n## Girders\n\n| # | girder | stations w / h p95 (mm) | sections | plates | manhole w / h worst (mm) |\n"
+       "|---|---|---|---|---|---|\n";
+  for (const auto& g : report["girders"]) {
+    const auto p95 = [](const nlohmann::json& x) {
+      return x["n"].get<int>() ? std::to_string(x["p95"].get<double>()).substr(0, 5) : std::string("–");
+    };
+    const auto worst = [](const nlohmann::json& x) {
+      return x["n"].get<int>() ? std::to_string(x["worst"].get<double>()).substr(0, 5) : std::string("–");
+    };
+    s << "| " << g["index"] << " | " << g["summary"].get<std::string>() << " | " << p95(g["width_error_mm"])
+      << " / " << p95(g["height_error_mm"]) << " | " << g["sections"]["found"] << " of " << g["sections"]["true"]
+      << " | " << g["plates"]["within_tolerance"] << "/" << g["plates"]["true"] << " (+" << g["plates"]["invented"]
+      << ") | " << worst(g["manholes"]["width_error_mm"]) << " / " << worst(g["manholes"]["height_error_mm"]) << " |\n";
+  }
+  return s.str();
+}
+
+}  // namespace tunnelmap

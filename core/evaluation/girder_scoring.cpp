@@ -1,0 +1,195 @@
+#include "core/evaluation/girder_scoring.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tunnelmap {
+
+namespace {
+
+Eigen::Vector3d vec3(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+
+// Truth stations of world points: the nearest point of the truth centre line, refined along it.
+class TruthLine {
+ public:
+  explicit TruthLine(const nlohmann::json& line) {
+    for (const auto& p : line) s_.push_back(p["station_m"].get<double>()), x_.push_back(vec3(p["point"]));
+  }
+  double station_of(const Eigen::Vector3d& p) const {
+    std::size_t best = 0;
+    double d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (const double d = (x_[i] - p).squaredNorm(); d < d2) d2 = d, best = i;
+    if (x_.size() < 2) return s_.empty() ? 0.0 : s_[0];
+    const std::size_t a = best == 0 ? 0 : best - 1, b = std::min(x_.size() - 1, best + 1);
+    const Eigen::Vector3d dir = (x_[b] - x_[a]).normalized();
+    return s_[best] + dir.dot(p - x_[best]);
+  }
+
+ private:
+  std::vector<double> s_;
+  std::vector<Eigen::Vector3d> x_;
+};
+
+struct TruthPlate {
+  double station;
+  bool manhole;
+  double width, height;
+};
+
+struct TruthRoom {
+  double from, to, width, height;
+};
+
+bool near_any(double s, const std::vector<double>& marks, double d) {
+  return std::any_of(marks.begin(), marks.end(), [&](double m) { return std::abs(s - m) < d; });
+}
+
+void score_stations(const StationMap& m, const TruthLine& line, const std::vector<TruthRoom>& rooms,
+                    const std::vector<double>& changes, const GirderScoringOptions& o, GirderScore& g) {
+  for (std::size_t k = 0; k < m.stations.size() && k < m.girder.centreline.size(); ++k) {
+    const Station& st = m.stations[k];
+    const double s = line.station_of(m.girder.centreline[k].point);
+    if (near_any(s, changes, o.skip_near_change_m)) continue;
+    const auto room = std::find_if(rooms.begin(), rooms.end(), [&](const TruthRoom& r) { return s >= r.from && s < r.to; });
+    if (room == rooms.end()) continue;
+    if (st.width_source == DimensionSource::Measured) g.width_error_mm.push_back((st.width_m - room->width) * 1000);
+    if (st.height_source == DimensionSource::Measured) g.height_error_mm.push_back((st.height_m - room->height) * 1000);
+  }
+}
+
+// Sections: the truth's cross-section changes against the map's section boundaries.
+void score_sections(const StationMap& m, const TruthLine& line, const std::vector<TruthRoom>& rooms,
+                    const GirderScoringOptions& o, GirderScore& g) {
+  std::vector<double> truth_joints;
+  for (std::size_t k = 1; k < rooms.size(); ++k)
+    if (std::abs(rooms[k].width - rooms[k - 1].width) > 1e-6 || std::abs(rooms[k].height - rooms[k - 1].height) > 1e-6)
+      truth_joints.push_back(rooms[k].from);
+  std::vector<double> found;
+  for (std::size_t k = 1; k < m.sections.size(); ++k)
+    found.push_back(line.station_of(m.origin + m.sections[k].from_m * m.axis));
+  g.sections_true = static_cast<int>(truth_joints.size()) + 1;
+  g.sections_found = static_cast<int>(m.sections.size());
+  g.joints_true = static_cast<int>(truth_joints.size());
+  for (double j : truth_joints) g.joints_found += near_any(j, found, o.joint_tolerance_m) ? 1 : 0;
+  for (double f : found) g.phantom_sections += near_any(f, truth_joints, o.joint_tolerance_m) ? 0 : 1;
+}
+
+void score_plates(const StationMap& m, const TruthLine& line, std::vector<TruthPlate> plates,
+                  double seen_from, double seen_to, const GirderScoringOptions& o, GirderScore& g) {
+  plates.erase(std::remove_if(plates.begin(), plates.end(),
+                              [&](const TruthPlate& p) { return p.station < seen_from || p.station > seen_to; }),
+               plates.end());
+  g.plates_true = static_cast<int>(plates.size());
+  std::vector<bool> used(plates.size(), false);
+  for (const Diaphragm& d : m.girder.diaphragms) {
+    const double s = line.station_of(d.point);
+    int best = -1;
+    for (std::size_t i = 0; i < plates.size(); ++i)
+      if (!used[i] && (best < 0 || std::abs(plates[i].station - s) < std::abs(plates[best].station - s))) best = int(i);
+    // Within the spacing of plates, the nearest truth plate is this one; the error decides.
+    if (best < 0 || std::abs(plates[best].station - s) > 0.5) {
+      ++g.plates_invented;
+      continue;
+    }
+    used[best] = true;
+    const TruthPlate& t = plates[best];
+    g.plate_error_mm.push_back((s - t.station) * 1000);
+    if (std::abs(s - t.station) <= o.plate_tolerance_m) ++g.plates_matched;
+    if (!t.manhole) continue;
+    if (!d.manhole) {
+      ++g.manholes_unmeasured;
+      continue;
+    }
+    g.manhole_width_error_mm.push_back((d.manhole->width_m - t.width) * 1000);
+    g.manhole_height_error_mm.push_back((d.manhole->height_m - t.height) * 1000);
+  }
+  g.plates_missed = static_cast<int>(std::count(used.begin(), used.end(), false));
+}
+
+void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, GirderScore& g) {
+  for (const PoseCorrection& c : dm.mapped.refinement.groups) {
+    g.correction_mm.push_back(c.translation_mm);
+    g.correction_deg.push_back(c.rotation_deg);
+  }
+  const std::size_t n = std::min<std::size_t>(dm.mapped.poses.size(), frames.size());
+  if (n < 3) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!frames[i].contains("pose_true")) return;
+  Eigen::Matrix3Xd est(3, n), truth(3, n);
+  std::vector<Eigen::Matrix3d> rot_true(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const nlohmann::json& p = frames[i]["pose_true"];  // row-major 4 x 4
+    Eigen::Matrix3d R;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) R(r, c) = p[4 * r + c].get<double>();
+    rot_true[i] = R;
+    truth.col(i) = Eigen::Vector3d(p[3].get<double>(), p[7].get<double>(), p[11].get<double>());
+    est.col(i) = dm.mapped.poses[i].translation();
+  }
+  // One rigid alignment of the whole sequence: its rotation from the orientations (a walk's
+  // camera centres lie almost on a line, which leaves the roll about it free), then the
+  // translation that matches the centroids.
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < n; ++i) M += rot_true[i] * dm.mapped.poses[i].linear().transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d Ra = svd.matrixU() * svd.matrixV().transpose();
+  if (Ra.determinant() < 0) {
+    Eigen::Matrix3d U = svd.matrixU();
+    U.col(2) *= -1;
+    Ra = U * svd.matrixV().transpose();
+  }
+  const Eigen::Vector3d ta = truth.rowwise().mean() - Ra * est.rowwise().mean();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d x = Ra * est.col(i) + ta;
+    g.pose_error_mm.push_back((x - truth.col(i)).norm() * 1000);
+    const Eigen::Matrix3d dR = rot_true[i].transpose() * Ra * dm.mapped.poses[i].linear();
+    g.pose_error_deg.push_back(Eigen::AngleAxisd(dR).angle() * 180 / M_PI);
+  }
+}
+
+}  // namespace
+
+GirderScore score_girder(const DatasetMapping& dm, const nlohmann::json& truth,
+                         const nlohmann::json& frames, const GirderScoringOptions& o) {
+  GirderScore g;
+  const nlohmann::json& girder = truth["girder"];
+  const TruthLine line(girder["centreline"]);
+  std::vector<TruthRoom> rooms;
+  for (const auto& r : girder["compartments"])
+    rooms.push_back({r["from_m"].get<double>(), r["to_m"].get<double>(), r["width_m"].get<double>(),
+                     r["height_m"].get<double>()});
+  std::vector<TruthPlate> plates;
+  std::vector<double> changes;
+  for (const auto& p : girder["diaphragms"]) {
+    const nlohmann::json& mh = p["manhole"];
+    plates.push_back({p["station_m"].get<double>(), !mh.is_null(),
+                      mh.is_null() ? 0.0 : mh["width_m"].get<double>(),
+                      mh.is_null() ? 0.0 : mh["height_m"].get<double>()});
+  }
+  // The girder's end walls are plates too (without an opening).
+  if (girder.contains("length_m")) {
+    plates.push_back({0.0, false, 0.0, 0.0});
+    plates.push_back({girder["length_m"].get<double>(), false, 0.0, 0.0});
+  }
+  for (const TruthPlate& p : plates) changes.push_back(p.station);
+  for (const TruthRoom& r : rooms) changes.push_back(r.from);
+  const StationMap& m = dm.mapped.stations;
+  score_stations(m, line, rooms, changes, o, g);
+  score_sections(m, line, rooms, o, g);
+  double seen_from = std::numeric_limits<double>::infinity(), seen_to = -seen_from;
+  for (const CentrelinePoint& c : m.girder.centreline) {
+    const double s = line.station_of(c.point);
+    seen_from = std::min(seen_from, s), seen_to = std::max(seen_to, s);
+  }
+  score_plates(m, line, plates, seen_from - 0.1, seen_to + 0.1, o, g);
+  score_poses(dm, frames, g);
+  const double n = std::max<std::size_t>(1, dm.maps.size());
+  g.ms_per_frame = (dm.detect_ms + dm.map_ms) / n;
+  return g;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,36 @@
+#pragma once
+// One mapped girder against the simulator's truth (dataset.json "ground_truth.girder" and each
+// frame's "pose_true"): station errors, phantom and found sections, plates placed, missed and
+// invented, manhole sizes, pose corrections and the poses' remaining error.
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "core/mapping/dataset_mapping.h"
+
+namespace tunnelmap {
+
+struct GirderScore {
+  std::vector<double> width_error_mm, height_error_mm;  // per measured station, signed
+  int sections_true = 0, sections_found = 0;
+  int phantom_sections = 0;          // sections the truth does not have
+  int joints_true = 0, joints_found = 0;  // joints found within joint_tolerance_m
+  int plates_true = 0, plates_matched = 0, plates_missed = 0, plates_invented = 0;
+  std::vector<double> plate_error_mm;                   // along the axis, signed
+  std::vector<double> manhole_width_error_mm, manhole_height_error_mm;
+  int manholes_unmeasured = 0;       // matched plates with an opening whose manhole is null
+  std::vector<double> correction_mm, correction_deg;    // per pose group
+  std::vector<double> pose_error_mm, pose_error_deg;    // per frame, after one rigid alignment
+  double ms_per_frame = 0.0;
+};
+
+struct GirderScoringOptions {
+  double skip_near_change_m = 0.15;  // stations this close to a plate or a joint are not scored
+  double joint_tolerance_m = 0.2;
+  double plate_tolerance_m = 0.02;
+};
+
+// `truth`: the dataset's "ground_truth"; `frames_json`: its "frames" (for "pose_true").
+GirderScore score_girder(const DatasetMapping& mapped, const nlohmann::json& truth,
+                         const nlohmann::json& frames_json, const GirderScoringOptions& options = {});
+
+}  // namespace tunnelmap
