@@ -53,7 +53,11 @@ struct SimStiffener {
 // Wall order used for per-wall arrays: left (y = +W/2), right (y = -W/2), top (z = H),
 // bottom (z = 0).
 enum SimWall { kSimLeft = 0, kSimRight = 1, kSimTop = 2, kSimBottom = 3 };
-// "left" -> kSimLeft, ...; -1 for other names.
+// kSimLeft -> "left", ... and back (-1 for other names).
+inline const char* sim_wall_name(int wall) {
+  static const char* const kNames[4] = {"left", "right", "top", "bottom"};
+  return wall >= 0 && wall < 4 ? kNames[wall] : "?";
+}
 inline int sim_wall_index(const std::string& name) {
   return name == "left" ? kSimLeft : name == "right" ? kSimRight : name == "top" ? kSimTop
        : name == "bottom" ? kSimBottom : -1;

@@ -1,7 +1,5 @@
 #include "core/sim/sim_config_json.h"
 
-#include <algorithm>
-
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -50,10 +48,9 @@ json sim_config_to_json(const SimConfig& c) {
   j["rivet_pitch_m"] = c.rivet_pitch_m;
   j["rivet_rows_per_band"] = c.rivet_rows_per_band;
   if (!c.stiffeners.empty()) {
-    static const char* kWalls[4] = {"left", "right", "top", "bottom"};
     json st = json::array();
     for (const SimStiffener& s : c.stiffeners)
-      st.push_back({{"wall", kWalls[std::clamp(s.wall, 0, 3)]}, {"position_m", s.position_m}});
+      st.push_back({{"wall", sim_wall_name(s.wall)}, {"position_m", s.position_m}});
     j["stiffeners"] = st;
     j["stiffener_height_m"] = c.stiffener_height_m;
     j["stiffener_thickness_m"] = c.stiffener_thickness_m;

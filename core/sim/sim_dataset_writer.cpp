@@ -150,10 +150,9 @@ json girder_json(const TunnelSimulator& sim, double lo, double hi) {
             {"compartments", rooms}};
   if (c.girder_length_m) g["length_m"] = *c.girder_length_m;
   if (!c.stiffeners.empty()) {
-    static const char* kWalls[4] = {"left", "right", "top", "bottom"};
     json st = json::array();
     for (const SimStiffener& s : c.stiffeners)
-      st.push_back({{"wall", kWalls[s.wall]},
+      st.push_back({{"wall", sim_wall_name(s.wall)},
                     {"position_m", s.position_m},
                     {"height_m", c.stiffener_height_m},
                     {"thickness_m", c.stiffener_thickness_m}});

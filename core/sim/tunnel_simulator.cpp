@@ -5,6 +5,7 @@
 #include <iterator>
 #include <limits>
 #include <thread>
+#include <tuple>
 
 #include "core/sim/sensor_model.h"
 #include "core/sim/sim_girder.h"
@@ -104,12 +105,18 @@ const SimDrift& TunnelSimulator::drift(int group) const {
   return drift_.empty() ? kNone : drift_.at(group);
 }
 
+std::pair<Eigen::Isometry3d, Eigen::Isometry3d> TunnelSimulator::reported(
+    int group, const Eigen::Isometry3d& T, const std::optional<SimArmState>& arm) const {
+  if (!arm) return {drift_.empty() ? T : drift(group).apply(T), Eigen::Isometry3d::Identity()};
+  if (drift_.empty()) return {arm->fk_pose, arm->base};
+  // Odometry drifts the base; the joints then place the camera from there (without sag).
+  const Eigen::Isometry3d base = drift(group).apply(arm->base);
+  return {base * (arm->base.inverse() * arm->fk_pose), base};
+}
+
 Eigen::Isometry3d TunnelSimulator::reported_pose(int index) const {
-  const SimDrift& d = drift(pose_group(index));
-  if (config_.arm_preset.empty()) return drift_.empty() ? pose(index) : d.apply(pose(index));
-  const SimArmState a = *arm_state(index);
-  if (drift_.empty()) return a.fk_pose;
-  return d.apply(a.base) * (a.base.inverse() * a.fk_pose);
+  const std::optional<SimArmState> arm = arm_state(index);
+  return reported(pose_group(index), arm ? arm->true_pose : wanted_pose(index), arm).first;
 }
 
 std::vector<double> TunnelSimulator::diaphragms_x() const {
@@ -227,14 +234,7 @@ SimFrame TunnelSimulator::render(int index) const {
   out.surface_id.assign(static_cast<std::size_t>(K.width) * K.height, 0);
   out.pose_group = pose_group(index);
   out.distance_to_manhole_m = distance_to_manhole(index);
-  const SimDrift& drift = this->drift(out.pose_group);
-  if (out.arm) {
-    out.reported_base = drift_.empty() ? out.arm->base : drift.apply(out.arm->base);
-    out.reported_pose = out.reported_base * (out.arm->base.inverse() * out.arm->fk_pose);
-    if (drift_.empty()) out.reported_pose = out.arm->fk_pose;
-  } else {
-    out.reported_pose = drift_.empty() ? T : drift.apply(T);
-  }
+  std::tie(out.reported_pose, out.reported_base) = reported(out.pose_group, T, out.arm);
 
   // Rows are independent (each has its own random stream), so threads do not change the result.
   const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 4);

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/frame/depth_frame.h"
@@ -88,6 +89,9 @@ class TunnelSimulator {
   // Group g's camera pose with a jitter (x, y, z in m; roll, pitch, yaw in degrees).
   Eigen::Isometry3d group_pose(int g, const double jitter[6]) const;
   void make_drift();
+  // The (pose, robot base) the dataset reports for a frame of `group` rendered at T.
+  std::pair<Eigen::Isometry3d, Eigen::Isometry3d> reported(
+      int group, const Eigen::Isometry3d& T, const std::optional<SimArmState>& arm) const;
   // `ideal` (ToF): receives every pixel's noise-free depth (0 = nothing hit), else nullptr.
   void render_rows(int index, const Eigen::Isometry3d& T, int row_begin, int row_step,
                    SimFrame& out, std::vector<float>* ideal) const;
