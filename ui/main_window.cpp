@@ -308,7 +308,7 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
   }
   show_views(outcome);
   FrameRecord record =
-      FrameRecord::from(outcome.frame_index, current_->result, outcome.method, current_->frame.source);
+      detection_record(outcome.frame_index, current_->frame.source, current_->result, outcome.method);
   // A partial re-run's "total" times only the stages it re-ran (0.1 ms for the tunnel stage);
   // the row shows the whole pipeline's time of the result on screen: the sum of its stages.
   if (outcome.from != Stage::Cloud) {
