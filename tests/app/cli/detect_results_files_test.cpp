@@ -35,7 +35,13 @@ TEST(CliResultsFiles, DetectJsonAndCsvAreTheCoreWriters) {
   for (const auto& f : doc["frames"]) {
     ASSERT_TRUE(std::getline(rows, row));
     const auto cell = [](const nlohmann::json& v) {
-      return v.is_null() ? std::string() : v.is_string() ? v.get<std::string>() : v.dump();
+      if (v.is_null()) return std::string();
+      if (!v.is_string()) return v.dump();
+      const std::string s = v.get<std::string>();
+      if (s.find_first_of(",\"") == std::string::npos) return s;
+      std::string quoted = "\"";  // RFC 4180
+      for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+      return quoted + "\"";
     };
     const std::string expected = std::to_string(f["index"].get<int>()) + "," + cell(f["source"]) + ",pgc," +
                                  (f["detected"].get<bool>() ? "1," : "0,") + cell(f["status"]) + "," +
