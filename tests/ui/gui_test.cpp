@@ -307,6 +307,9 @@ class GuiTest : public QObject {
       w.process_sequence();
       QTRY_VERIFY_WITH_TIMEOUT(int(w.results_panel()->records().size()) == in.frames &&
                                    !w.findChild<QProgressBar*>()->isVisible(), 60000);
+      // Viewing a frame afterwards (alone, without the context) keeps the sequence's row.
+      QVERIFY(w.select_frame(in.frames - 1));
+      QVERIFY(wait_frame(w));
       const QString gui = dir_.filePath("seq_gui.json"), cli = dir_.filePath("seq_cli.json");
       QVERIFY(w.export_results_json(gui));
       QProcess detect;
