@@ -1,5 +1,5 @@
 // Whole-sequence throughput: a 30-frame simulated dataset read from disk (PNG decoding
-// included), detected through SequenceRunner with the tunnel context applied in order, on 1
+// included), detected through the run engine with the context applied in order, on 1
 // thread and on every core. Counter "fps" = frames per second of wall time; "cores_used" =
 // process CPU time / wall time (below the thread count when other processes share the cores,
 // then fps says nothing about scaling).
@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "core/io/frame_source.h"
-#include "core/pipeline/sequence_runner.h"
+#include "core/engine/run_engine.h"
 #include "core/sim/sim_dataset_writer.h"
 
 namespace tunnelmap::bench {
@@ -42,17 +42,15 @@ void BM_Sequence(benchmark::State& state, const std::string& preset) {
   const std::unique_ptr<FrameSource> source = open_input(sequence_dataset(preset), ReadOptions());
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
-  Pipeline pipeline(params);
-  if (source->dataset()) pipeline.set_world_up(source->dataset()->up);
-  SequenceOptions opt;
-  opt.threads = threads;
+  RunSettings settings;
+  settings.params = params;
+  settings.threads = threads;
   std::size_t frames = 0, detected = 0;
   const double cpu0 = process_cpu_s();
   const auto wall0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
-    TunnelContext context;
-    SequenceRunner runner(pipeline, &context, opt);
-    runner.run(*source, [&](SequenceFrame& f) {
+    RunEngine engine(settings, source.get());  // a fresh context per pass
+    engine.run(*source, [&](SequenceFrame& f) {
       ++frames;
       detected += f.ok() && f.result.map.detected;
       return true;

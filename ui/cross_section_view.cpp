@@ -111,12 +111,20 @@ QString CrossSectionView::caption() const {
                   .arg(section_.points.size());
   if (!section_.fitted) return s + tr("\nno fitted rectangle here (tunnel not detected)");
   s += tr("\nwidth %1 m, height %2 m").arg(section_.fitted->width(), 0, 'f', 3).arg(section_.fitted->height(), 0, 'f', 3);
-  if (section_.design)
-    s += tr("; design %1 \u00d7 %2 m: width %3 mm, height %4 mm")
+  if (section_.design) {
+    // A deviation only of a measured or context value; a value filled from the design is
+    // labelled so, never "0.0 mm" off.
+    const auto deviation = [](double value, double design, DimensionSource source) {
+      if (source == DimensionSource::Design) return tr("from design");
+      if (source == DimensionSource::Unseen) return tr("unknown");
+      return tr("%1 mm").arg((value - design) * 1000.0, 0, 'f', 1);
+    };
+    s += tr("; design %1 \u00d7 %2 m: width %3, height %4")
              .arg(section_.design->width(), 0, 'f', 3)
              .arg(section_.design->height(), 0, 'f', 3)
-             .arg((section_.fitted->width() - section_.design->width()) * 1000.0, 0, 'f', 1)
-             .arg((section_.fitted->height() - section_.design->height()) * 1000.0, 0, 'f', 1);
+             .arg(deviation(section_.fitted->width(), section_.design->width(), section_.width_source))
+             .arg(deviation(section_.fitted->height(), section_.design->height(), section_.height_source));
+  }
   return s;
 }
 

@@ -2,7 +2,6 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/baselines/method_runner.h"
 #include "sensors/openni/latest_frame_grabber.h"
 #include "sensors/openni/live_device.h"
 #include "sensors/openni/oni_recording.h"
@@ -42,6 +41,7 @@ void LiveView::stop() {
     grabber_->with_streams_paused([&] { recording_.reset(); });
   recording_.reset();
   grabber_.reset();  // stops streaming and joins the reader
+  engine_.reset();   // the next start has no context of this one
 }
 
 void LiveView::start_recording(const QString& path) {
@@ -83,13 +83,22 @@ void LiveView::tick() {
   const int index = static_cast<int>(grabbed->sequence) - 1;
   auto processed = std::make_shared<scene::ProcessedFrame>();
   processed->frame = std::move(grabbed->frame);
-  watcher_.setFuture(QtConcurrent::run([processed, params, m, index]() {
+  // The engine keeps the context of the frames shown so far, as `detect --device` does; a change
+  // of parameters or method starts it afresh.
+  if (!engine_ || engine_->settings().params != params || engine_->settings().method != m) {
+    RunSettings settings;
+    settings.params = params;
+    settings.method = m;
+    settings.live = true;
+    engine_ = std::make_shared<RunEngine>(settings, nullptr);
+  }
+  watcher_.setFuture(QtConcurrent::run([processed, engine = engine_, params, m, index]() {
     RunOutcome out;
     out.frame_index = index;
     out.params = params;
     out.method = m;
     try {
-      MethodRunner(m, params).run(processed->frame, processed->result);
+      engine->run_next(index, processed->frame, processed->result);  // one frame at a time (busy_)
       out.geometry = std::make_shared<scene::SceneGeometry>(scene::build_geometry(processed->scene_data()));
       out.depth_image = depth_label_image(*processed);
       out.processed = processed;

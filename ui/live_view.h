@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "core/baselines/method.h"
+#include "core/engine/run_engine.h"
 #include "core/params/parameters.h"
 #include "ui/pipeline_runner.h"
 
@@ -70,6 +71,7 @@ class LiveView : public QObject {
   std::chrono::steady_clock::time_point arrived_;
   std::deque<std::chrono::steady_clock::time_point> shown_times_;
   LiveStats stats_;
+  std::shared_ptr<RunEngine> engine_;  // the frames' context since start()
 };
 
 }  // namespace tunnelmap::ui

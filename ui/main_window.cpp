@@ -3,6 +3,8 @@
 // results_export.cpp.
 #include "ui/main_window.h"
 
+#include <algorithm>
+
 #include <QComboBox>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -308,7 +310,7 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
   }
   show_views(outcome);
   FrameRecord record =
-      FrameRecord::from(outcome.frame_index, current_->result, outcome.method, current_->frame.source);
+      detection_record(outcome.frame_index, current_->frame.source, current_->result, outcome.method);
   // A partial re-run's "total" times only the stages it re-ran (0.1 ms for the tunnel stage);
   // the row shows the whole pipeline's time of the result on screen: the sum of its stages.
   if (outcome.from != Stage::Cloud) {
@@ -319,7 +321,14 @@ void MainWindow::on_run_finished(const RunOutcome& outcome) {
     }
     record.timings_ms["total"] = full;
   }
-  results_->set_record(record, outcome.params);
+  // A row made with the same method and parameters stays: a sequence's row carries the context
+  // of the frames before it (as `detect` computes it), which a frame viewed alone lacks.
+  const auto& rows = results_->records();
+  const bool same_row = std::any_of(rows.begin(), rows.end(), [&](const FrameRecord& r) {
+    return r.index == outcome.frame_index && r.method == outcome.method &&
+           results_->parameter_set(r.param_set) == outcome.params;
+  });
+  if (!same_row) results_->set_record(record, outcome.params);
   results_->set_current(outcome.frame_index);
   const auto& r = current_->result;
   auto total = r.timings_ms.find("total");

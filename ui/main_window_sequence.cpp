@@ -1,15 +1,13 @@
-// MainWindow, Process whole sequence: every frame of the input through core's SequenceRunner
-// (frames detected in parallel, the tunnel context of earlier frames applied in frame order, so
-// the rows equal a serial run), results delivered to the table as they come, with progress and
-// Cancel. A cancelled run keeps the rows that finished.
+// MainWindow, Process whole sequence: every frame of the input through core's RunEngine, the
+// same loop and context rule as `detect` (station map for posed frames, recent frames
+// otherwise), results delivered to the table as they come, with progress and Cancel. A
+// cancelled run keeps the rows that finished.
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include "core/baselines/method_runner.h"
-#include "core/pipeline/sequence_runner.h"
-#include "core/tunnel/tunnel_detector.h"
+#include "core/engine/run_engine.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/results_panel.h"
@@ -29,37 +27,16 @@ void MainWindow::process_sequence() {
   const Parameters params = params_->parameters();
   const Method method = method_;
   sequence_future_ = QtConcurrent::run([this, source, params, method, n] {
-    MethodRunner runner(method, params);
-    if (const Dataset* ds = source->dataset()) runner.set_world_up(ds->up);
-    TunnelContext context;
-    SequenceRunner::Work work;
-    SequenceRunner::Ordered in_order;
-    if (method == Method::Qhull) {
-      // Qhull checks the context inside its fit: it runs in frame order.
-      in_order = [&runner, &context](SequenceFrame& f) { runner.run(f.frame, f.result, &context); };
-    } else {
-      work = [runner](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
-      in_order = [&context, opt = tunnel_options(params)](SequenceFrame& f) {
-        apply_tunnel_context(f.result.map, opt, context);
-        if (f.result.map.detected) context.accept(f.result.map);
-      };
-    }
-    SequenceOptions options;
-    options.serial_loading = !source->dataset();  // recordings have a read position
-    SequenceRunner sequence(std::move(work), std::move(in_order), options);
+    RunSettings settings;
+    settings.params = params;
+    settings.method = method;
+    RunEngine engine(settings, source.get());
     int done = 0;
-    sequence.run(*source, [&](SequenceFrame& f) {
+    engine.run(*source, [&](SequenceFrame& f) {
       const int i = static_cast<int>(f.index);
-      FrameRecord rec;
-      QString error;
-      if (f.ok()) {
-        rec = FrameRecord::from(i, f.result, method, f.frame.source);
-      } else {
-        rec.index = i;
-        rec.method = method;
-        rec.status = "error";
-        error = QString::fromStdString(f.error_message);
-      }
+      const FrameRecord rec = f.ok() ? detection_record(i, f.frame.source, f.result, method)
+                                     : error_record(i, source->describe(f.index), f.error_message, method);
+      const QString error = f.ok() ? QString() : QString::fromStdString(f.error_message);
       done = i + 1;
       QMetaObject::invokeMethod(this, [this, rec, error, i, params] {
         results_->set_record(rec, params);

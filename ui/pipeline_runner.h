@@ -1,9 +1,9 @@
 #pragma once
-// PipelineRunner: runs the pipeline off the GUI thread. Requests are debounced by the caller;
-// here only the newest request matters: while one run is in flight, newer requests replace the
+// PipelineRunner: runs the engine's frame run (core/engine/frame_run.h) off the GUI thread.
+// Requests are debounced by the caller; here only the newest request matters: while one run is in flight, newer requests replace the
 // pending one and the in-flight result is dropped as stale (Pipeline::run has no cancellation
 // point, so a stale run finishes but is never shown). A parameter change re-runs only the stages
-// from the earliest one any changed parameter affects (ParameterSpec::stage). The worker also
+// from the earliest one any changed parameter affects (the engine decides). The worker also
 // builds the scene geometry and the depth image; the point-cloud polydata of the previous run
 // is reused (same object, so VTK keeps its GPU buffers) when only later stages re-ran.
 #include <QFutureWatcher>
@@ -13,6 +13,7 @@
 #include <optional>
 
 #include "core/baselines/method.h"
+#include "core/engine/run_settings.h"
 #include "core/io/frame_source.h"
 #include "ui/scene/processed_frame.h"
 #include "ui/scene/scene_geometry.h"
@@ -50,8 +51,7 @@ class PipelineRunner : public QObject {
  private:
   struct Job {
     int frame_index;
-    Parameters params;
-    Method method;
+    RunSettings settings;
     qint64 requested_ns;
   };
   void start(const Job& job);
@@ -60,22 +60,13 @@ class PipelineRunner : public QObject {
   std::shared_ptr<const FrameSource> source_;
   std::shared_ptr<const scene::ProcessedFrame> cache_;  // last completed run
   std::shared_ptr<const scene::SceneGeometry> cache_geometry_;
-  Parameters cache_params_;
-  Method cache_method_ = Method::Pgc;
+  RunSettings cache_settings_;  // what made cache_
   int cache_frame_ = -1;
   std::optional<Job> pending_;
   bool running_ = false;
   int runs_started_ = 0;
   QFutureWatcher<RunOutcome> watcher_;
 };
-
-// Loads frame `index` of `source` and runs `method` on it: PG&C through the pipeline, the
-// baselines through MethodRunner (same FrameResult). InputError on bad data.
-scene::ProcessedFrame process_with_method(const FrameSource& source, std::size_t index, Method method,
-                                          const Parameters& params, TunnelContext* context = nullptr);
-
-// The earliest stage affected by any parameter that differs between `a` and `b`; nullopt if equal.
-std::optional<Stage> first_changed_stage(const Parameters& a, const Parameters& b);
 
 }  // namespace tunnelmap::ui
 

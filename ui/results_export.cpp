@@ -18,13 +18,13 @@
 namespace tunnelmap::ui {
 
 void write_results_json(const std::string& path, const std::string& input,
-                        const std::vector<FrameRecord>& records, const nlohmann::json& params,
-                        const Dataset* dataset, const std::function<nlohmann::json(int)>& set_params) {
+                        const std::vector<FrameRecord>& records, const Parameters& params,
+                        const Dataset* dataset, const std::function<std::optional<Parameters>(int)>& set_params) {
   write_detection_json(path, results_document(records, params, input, dataset, set_params));
 }
 
 void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records) {
-  write_detection_csv(path, results_document(records, nlohmann::json::object(), {}, nullptr));
+  write_detection_csv(path, results_document(records, Parameters(), {}, nullptr));
 }
 
 bool MainWindow::export_map_ply(const QString& path) {
@@ -56,8 +56,8 @@ bool MainWindow::export_planes_ply(const QString& path) {
 bool MainWindow::export_results_json(const QString& path) {
   try {
     write_results_json(path.toStdString(), input_path_.toStdString(), results_->records(),
-                       params_->parameters().to_json(), source_ ? source_->dataset() : nullptr,
-                       [this](int set) { return results_->parameter_set_json(set); });
+                       params_->parameters(), source_ ? source_->dataset() : nullptr,
+                       [this](int set) { return results_->parameter_set(set); });
   } catch (const std::exception& e) {
     show_error(QString::fromStdString(e.what()));
     return false;

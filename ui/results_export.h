@@ -3,7 +3,6 @@
 // `--csv` write (core/report; the JSON loads as a preset by its "params"). The File-menu
 // exports (MainWindow::export_*) are in results_export.cpp too.
 #include <functional>
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -14,8 +13,9 @@ namespace tunnelmap::ui {
 // `dataset` (may be null): the ground truth of the summary.
 // `set_params(k)`: the parameters of set k (results_document).
 void write_results_json(const std::string& path, const std::string& input,
-                        const std::vector<FrameRecord>& records, const nlohmann::json& params,
-                        const Dataset* dataset, const std::function<nlohmann::json(int)>& set_params = {});
+                        const std::vector<FrameRecord>& records, const Parameters& params,
+                        const Dataset* dataset,
+                        const std::function<std::optional<Parameters>(int)>& set_params = {});
 void write_results_csv(const std::string& path, const std::vector<FrameRecord>& records);
 
 }  // namespace tunnelmap::ui

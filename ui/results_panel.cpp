@@ -127,18 +127,24 @@ QString ResultsPanel::summary_text() const {
       lines << line + tr("%1 frame(s), no tunnel detected").arg(s.frames);
       continue;
     }
-    // As `detect` prints it: means over the measured widths and heights only.
-    line += tr("%1/%2 detected — width %3 (%4) m, height %5 (%6) m")
-                .arg(s.detected)
-                .arg(s.frames)
-                .arg(s.width_mean_m, 0, 'f', 3)
-                .arg(s.width_std_m, 0, 'f', 3)
-                .arg(s.height_mean_m, 0, 'f', 3)
-                .arg(s.height_std_m, 0, 'f', 3);
-    if (s.gt_width_m && s.gt_height_m)
-      line += tr(", mean abs error %1 / %2 mm vs ground truth")
-                  .arg(s.width_abs_error_mean_m * 1000, 0, 'f', 1)
-                  .arg(s.height_abs_error_mean_m * 1000, 0, 'f', 1);
+    // As `detect` prints it: means over the measured widths and heights only, each with the
+    // number of frames it covers; unknown when no frame measured it.
+    line += tr("%1/%2 detected").arg(s.detected).arg(s.frames);
+    const auto stat = [this](const QString& name, int n, const std::optional<double>& mean,
+                             const std::optional<double>& sd) {
+      if (!mean) return tr(" — %1 unknown (measured in no frame)").arg(name);
+      return tr(" — %1 %2 (%3) m over %4 frame(s)")
+          .arg(name)
+          .arg(*mean, 0, 'f', 3)
+          .arg(sd ? QString::number(*sd, 'f', 3) : QString("–"))
+          .arg(n);
+    };
+    line += stat(tr("width"), s.width_frames, s.width_mean_m, s.width_std_m);
+    line += stat(tr("height"), s.height_frames, s.height_mean_m, s.height_std_m);
+    if (s.width_abs_error_mean_m || s.height_abs_error_mean_m) {
+      const auto mm = [](const std::optional<double>& v) { return v ? QString::number(*v * 1000, 'f', 1) : QString("–"); };
+      line += tr(", mean abs error %1 / %2 mm vs ground truth").arg(mm(s.width_abs_error_mean_m)).arg(mm(s.height_abs_error_mean_m));
+    }
     lines << line;
   }
   return lines.join('\n');
@@ -149,13 +155,19 @@ void ResultsPanel::refresh() {
   table_->setRowCount(static_cast<int>(records_.size()));
   for (int row = 0; row < static_cast<int>(records_.size()); ++row) {
     const FrameRecord& r = records_[row];
-    auto t = r.timings_ms.find("total");
-    // Frames numbered from 1, as on the timeline.
+    const auto total = r.total_ms();
+    // Frames numbered from 1, as on the timeline; a known value with where it came from unless
+    // measured ("0.820 design"); unknown "–".
+    const auto value = [](const std::optional<double>& v, const std::optional<DimensionSource>& source) {
+      if (!v) return QString("–");
+      QString text = QString::number(*v, 'f', 3);
+      if (source && *source != DimensionSource::Measured) text += QString(" ") + dimension_source_name(*source);
+      return text;
+    };
     const QStringList cells = {QString::number(r.index + 1), QString::fromStdString(r.status),
-                               r.detected ? QString::number(r.width_m, 'f', 3) : "–",
-                               r.detected ? QString::number(r.height_m, 'f', 3) : "–",
-                               QString::number(r.planes),
-                               t == r.timings_ms.end() ? "–" : QString::number(t->second, 'f', 1),
+                               value(r.width_m, r.width_source), value(r.height_m, r.height_source),
+                               r.error ? "–" : QString::number(r.planes),
+                               total ? QString::number(*total, 'f', 1) : "–",
                                QString::fromUtf8(method_display_name(r.method)),
                                r.param_set > 0 ? QString("#%1").arg(r.param_set) : "–"};
     for (int c = 0; c < cells.size(); ++c) table_->setItem(row, c, new QTableWidgetItem(cells[c]));

@@ -28,9 +28,10 @@ class ResultsPanel : public QWidget {
   void set_record(FrameRecord record, const Parameters& params);
   void set_ground_truth(std::optional<double> width_m, std::optional<double> height_m);
   const std::vector<FrameRecord>& records() const { return records_; }
-  // The parameters of set `k` (FrameRecord::param_set, from 1) as JSON; null when unknown.
-  nlohmann::json parameter_set_json(int k) const {
-    return k >= 1 && k <= static_cast<int>(param_sets_.size()) ? param_sets_[k - 1].to_json() : nlohmann::json();
+  // The parameters of set `k` (FrameRecord::param_set, from 1); empty when unknown.
+  std::optional<Parameters> parameter_set(int k) const {
+    return k >= 1 && k <= static_cast<int>(param_sets_.size()) ? std::optional<Parameters>(param_sets_[k - 1])
+                                                                : std::nullopt;
   }
   QString summary_text() const;  // one line per (method, parameter set), in order of appearance
   // Fusion: one line per arm pose ("ok" or "move and rescan: …"); empty hides the list.

@@ -14,7 +14,13 @@ const QColor kSeriesColour[2] = {QColor(30, 110, 200), QColor(200, 90, 30)};
 const QColor kFlagColour(220, 20, 20);
 const QColor kMarkerColour(20, 150, 60);
 
-double value_of(const FrameRecord& r, int series) { return series == 0 ? r.width_m : r.height_m; }
+// The value a frame shows: measured, or from the context of the other frames. Unknown values
+// and values filled from the design are not observations: never plotted, never flagged.
+std::optional<double> value_of(const FrameRecord& r, int series) {
+  const std::optional<DimensionSource>& source = series == 0 ? r.width_source : r.height_source;
+  if (!r.detected || !source || *source == DimensionSource::Design) return std::nullopt;
+  return series == 0 ? r.width_m : r.height_m;
+}
 }  // namespace
 
 ResultsPlot::ResultsPlot(QWidget* parent) : QWidget(parent) {
@@ -45,12 +51,11 @@ void ResultsPlot::set_reference(const PlotReference& reference) {
 
 std::vector<int> ResultsPlot::out_of_tolerance() const {
   std::vector<int> out;
-  for (const auto& r : records_) {
-    if (!r.detected) continue;
-    const bool w = reference_.width_m && std::abs(r.width_m - *reference_.width_m) > reference_.tolerance_m;
-    const bool h = reference_.height_m && std::abs(r.height_m - *reference_.height_m) > reference_.tolerance_m;
-    if (w || h) out.push_back(r.index);
-  }
+  const auto off = [&](const std::optional<double>& v, const std::optional<double>& ref) {
+    return v && ref && std::abs(*v - *ref) > reference_.tolerance_m;
+  };
+  for (const auto& r : records_)
+    if (off(value_of(r, 0), reference_.width_m) || off(value_of(r, 1), reference_.height_m)) out.push_back(r.index);
   return out;
 }
 
@@ -105,9 +110,9 @@ void ResultsPlot::draw_series(QPainter& p, int series) const {
   const std::optional<double> ref = series == 0 ? reference_.width_m : reference_.height_m;
   double lo = 1e9, hi = -1e9;
   for (const auto& r : records_)
-    if (r.detected) {
-      lo = std::min(lo, value_of(r, series));
-      hi = std::max(hi, value_of(r, series));
+    if (const auto v = value_of(r, series)) {
+      lo = std::min(lo, *v);
+      hi = std::max(hi, *v);
     }
   if (ref) {
     lo = std::min(lo, *ref - reference_.tolerance_m);
@@ -136,20 +141,22 @@ void ResultsPlot::draw_series(QPainter& p, int series) const {
   QPainterPath path;
   bool started = false;
   for (const auto& r : records_) {
-    if (!r.detected) continue;
-    const QPointF q(x_of(r.index), y_of(value_of(r, series)));
+    const auto v = value_of(r, series);
+    if (!v) continue;
+    const QPointF q(x_of(r.index), y_of(*v));
     started ? path.lineTo(q) : path.moveTo(q);
     started = true;
   }
   p.setPen(QPen(kSeriesColour[series], 1.5));
   p.drawPath(path);
   for (const auto& r : records_) {
-    if (!r.detected) continue;
-    const bool out = ref && std::abs(value_of(r, series) - *ref) > reference_.tolerance_m;
+    const auto v = value_of(r, series);
+    if (!v) continue;
+    const bool out = ref && std::abs(*v - *ref) > reference_.tolerance_m;
     p.setPen(Qt::NoPen);
     p.setBrush(out ? kFlagColour : kSeriesColour[series]);
     const double radius = out ? 4.0 : 2.0;
-    p.drawEllipse(QPointF(x_of(r.index), y_of(value_of(r, series))), radius, radius);
+    p.drawEllipse(QPointF(x_of(r.index), y_of(*v)), radius, radius);
   }
   p.setBrush(Qt::NoBrush);
   p.setPen(Qt::darkGray);

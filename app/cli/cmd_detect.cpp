@@ -9,11 +9,9 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
-#include "core/baselines/method_runner.h"
 #include "core/export/map_ply.h"
+#include "core/engine/run_engine.h"
 #include "core/io/frame_source.h"
-#include "core/mapping/station_map_builder.h"
-#include "core/pipeline/sequence_runner.h"
 #include "core/report/results_csv.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
@@ -61,11 +59,36 @@ void print_frame_line(std::size_t index, const std::string& what, const FrameRes
                 r.timings_ms.at("total"));
 }
 
+// Means over the measured values only, each with the number of frames it covers.
+void print_summary_line(const DetectionSummary& s) {
+  std::printf("summary: %d/%d frames detected", s.detected, s.frames);
+  const auto stat = [](const char* name, int n, const std::optional<double>& mean, const std::optional<double>& sd) {
+    if (!mean) return std::printf(", %s unknown (measured in no frame)", name), void();
+    std::printf(", %s %.4f m", name, *mean);
+    if (sd) std::printf(" (sigma %.4f)", *sd);
+    std::printf(" over %d frame%s", n, n == 1 ? "" : "s");
+  };
+  stat("width", s.width_frames, s.width_mean_m, s.width_std_m);
+  stat("height", s.height_frames, s.height_mean_m, s.height_std_m);
+  if (s.width_abs_error_mean_m || s.height_abs_error_mean_m) {
+    const auto mm = [](const std::optional<double>& v) { return v ? *v * 1000 : std::nan(""); };
+    std::printf(", mean abs error %.1f / %.1f mm vs ground truth", mm(s.width_abs_error_mean_m),
+                mm(s.height_abs_error_mean_m));
+  }
+  if (s.total_ms_median) std::printf(", median %.1f ms/frame", *s.total_ms_median);
+  std::printf("\n");
+}
+
 int run_detect(const DetectOptions& o) {
-  Pipeline pipeline = o.in.pipeline();  // parameter errors before any reading
+  RunSettings settings;  // parameter errors before any reading
+  settings.params = o.in.parameters();
+  settings.camera_up = o.in.camera_up();
+  settings.method = parse_method(o.method);
+  settings.threads = o.threads;
   for (const std::string& out : {o.json_path, o.csv_path, o.ply_path})
     if (!out.empty()) check_output_path(out);
   const bool live = !o.device.empty();
+  settings.live = live;
   // One line each (CLI::RequiredError appends " is required" itself).
   if (!live && o.in.input.empty()) throw CLI::RequiredError("detect: INPUT or --device URI");
   if (live && !o.in.input.empty()) throw CLI::ValidationError("detect", "give INPUT or --device URI, not both");
@@ -82,71 +105,36 @@ int run_detect(const DetectOptions& o) {
   std::vector<double> latencies_ms;
   DetectionSummary summary;
   if (const Dataset* ds = source->dataset()) {
-    pipeline.set_world_up(ds->up);
     summary.gt_width_m = ds->gt_width_m;
     summary.gt_height_m = ds->gt_height_m;
   }
-  // --method: PG&C or one of the paper's baselines, same inputs and outputs.
-  MethodRunner runner(parse_method(o.method), pipeline.params());
-  runner.set_camera_up(o.in.camera_up());
-  if (const Dataset* ds = source->dataset()) runner.set_world_up(ds->up);
-  TunnelContext context;
-  StationMapBuilder stations(station_map_options(pipeline.params()), tunnel_options(pipeline.params()));
-  // Frames are detected in parallel without the context (each worker with its own copy of the
-  // runner); the context of earlier frames is applied in frame order, so the output equals a
-  // serial run. Qhull checks the context inside its fit: it runs in order (loading still ahead).
-  SequenceRunner::Work work;
-  SequenceRunner::Ordered in_order;
-  if (runner.method() == Method::Qhull) {
-    in_order = [&runner, &context](SequenceFrame& f) { runner.run(f.frame, f.result, &context); };
-  } else {
-    work = [runner](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
-    // Posed frames: the context is the station map along the tunnel (world frame), which
-    // follows sections that change; frames without a pose keep the context of recent widths.
-    in_order = [&context, &stations, opt = tunnel_options(pipeline.params())](SequenceFrame& f) {
-      if (f.frame.pose) {
-        stations.add_frame(static_cast<int>(f.index), f.result, *f.frame.pose);
-        return;
-      }
-      apply_tunnel_context(f.result.map, opt, context);
-      if (f.result.map.detected) context.accept(f.result.map);
-    };
-  }
-  SequenceOptions seq;
-  seq.threads = live ? 1 : o.threads;         // a live camera delivers one frame at a time
-  seq.serial_loading = !source->dataset();    // recordings have a read position
-  SequenceRunner sequence(std::move(work), std::move(in_order), seq);
+  RunEngine engine(settings, source.get());
 
-  nlohmann::json frames = nlohmann::json::array();
+  DetectionDocument doc;
+  doc.method = settings.method;
+  doc.input = live ? o.device : o.in.input;
+  doc.params = settings.params;
   std::optional<TunnelMap> last_map;
   Eigen::Isometry3d last_pose = Eigen::Isometry3d::Identity();
   Progress progress(source->size());
-  sequence.run(*source, [&](SequenceFrame& f) {
+  engine.run(*source, [&](SequenceFrame& f) {
     if (!f.ok()) std::rethrow_exception(f.error);  // one-line error, exit 3, as before
     const std::size_t i = f.index;
     const FrameResult& result = f.result;
     if (i == 0) first_frame = f.loaded_at;
     last_frame = f.loaded_at;
     latencies_ms.push_back(std::chrono::duration<double, std::milli>(clock::now() - f.loaded_at).count());
-    summary.add(result);
-    frames.push_back(detection_frame_json(i, f.frame.source, result));
+    doc.frames.push_back(detection_record(static_cast<int>(i), f.frame.source, result, settings.method));
+    summary.add(doc.frames.back());
     if (result.map.detected) {
       last_map = result.map;
       last_pose = f.frame.pose.value_or(Eigen::Isometry3d::Identity());
     }
     if (!o.quiet) print_frame_line(i, source->describe(i), result);
-    progress.step(i + 1);
     return true;
-  });
+  }, [&progress](std::size_t done, std::size_t) { progress.step(done); });
   summary.finish();
-  std::printf("summary: %d/%d frames detected", summary.detected, summary.frames);
-  if (summary.detected > 0)
-    std::printf(", width %.4f m (sigma %.4f), height %.4f m (sigma %.4f)", summary.width_mean_m,
-                summary.width_std_m, summary.height_mean_m, summary.height_std_m);
-  if (summary.gt_width_m && summary.gt_height_m && summary.detected > 0)
-    std::printf(", mean abs error %.1f / %.1f mm vs ground truth", summary.width_abs_error_mean_m * 1000,
-                summary.height_abs_error_mean_m * 1000);
-  std::printf(", median %.1f ms/frame\n", summary.total_ms_median);
+  print_summary_line(summary);
   if (live && !latencies_ms.empty()) {
     const double seconds = std::chrono::duration<double>(last_frame - first_frame).count();
     const double fps = seconds > 0 ? (latencies_ms.size() - 1) / seconds : 0.0;  // frame intervals
@@ -155,16 +143,12 @@ int run_detect(const DetectOptions& o) {
                 seconds, fps, latencies_ms[latencies_ms.size() / 2], latencies_ms.back());
   }
 
-  const nlohmann::json params = pipeline.params().to_json();
-  if (!o.json_path.empty() || !o.csv_path.empty()) {
-    nlohmann::json doc = detection_document(params, frames, summary, live ? o.device : o.in.input);
-    doc["method"] = method_name(runner.method());
-    if (!o.json_path.empty()) write_detection_json(o.json_path, doc);
-    if (!o.csv_path.empty()) write_detection_csv(o.csv_path, doc);
-  }
+  doc.summary = summary;
+  if (!o.json_path.empty()) write_detection_json(o.json_path, doc);
+  if (!o.csv_path.empty()) write_detection_csv(o.csv_path, doc);
   if (!o.ply_path.empty()) {
     if (last_map)
-      write_map_ply(o.ply_path, *last_map, params, last_pose);
+      write_map_ply(o.ply_path, *last_map, settings.params.to_json(), last_pose);
     else
       std::fprintf(stderr, "tunnelmap-cli: no tunnel detected in any frame: %s not written\n",
                    o.ply_path.c_str());

@@ -10,7 +10,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
 #include "core/io/frame_source.h"
-#include "core/pipeline/sequence_runner.h"
+#include "core/engine/run_engine.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -88,13 +88,12 @@ int run_planes(const PlanesOptions& o) {
     r.timings_ms.clear();
     for (auto& [stage, values] : samples) r.timings_ms[stage] = median(values);
   };
-  SequenceOptions seq;
-  seq.threads = o.threads;
-  seq.serial_loading = !source->dataset();  // recordings have a read position
-  SequenceRunner sequence(work, nullptr, seq);
+  RunSettings settings;
+  settings.params = params;
+  settings.threads = o.threads;
   nlohmann::json frames = nlohmann::json::array();
   Progress progress(source->size());
-  sequence.run(*source, [&](SequenceFrame& f) {
+  run_frames(*source, work, settings, [&](SequenceFrame& f) {
     if (!f.ok()) std::rethrow_exception(f.error);  // one-line error, exit 3, as before
     const std::size_t i = f.index;
     const PlaneSegments& planes = f.result.planes;
@@ -105,9 +104,8 @@ int run_planes(const PlanesOptions& o) {
                 timings.at("planes"), timings.at("total"),
                 o.repeat > 1 ? (" (median of " + std::to_string(o.repeat) + ")").c_str() : "");
     if (!o.labels_path.empty()) write_labels(labels_name(o.labels_path, i, source->size()), planes);
-    progress.step(i + 1);
     return true;
-  });
+  }, [&progress](std::size_t done, std::size_t) { progress.step(done); });
   if (!o.json_path.empty()) {
     nlohmann::json doc = {{"tool", "tunnelmap"}, {"version", TUNNELMAP_VERSION}, {"method", "pgc"},
                           {"input", o.in.input}, {"params", params.to_json()}, {"repeat", o.repeat},

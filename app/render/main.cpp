@@ -60,9 +60,11 @@ int run(const render::RenderOptions& opt) {
   if (!opt.mesh.empty()) throw ParameterError("--mesh goes with --map (a mesh PLY alone is drawn as INPUT)");
   if (render::is_mesh_input(opt.in.input)) return run_mesh(opt);
   auto source = open_input(opt.in.input, opt.in.read_options());
-  Pipeline pipeline = opt.in.pipeline();  // parameters and camera up, as `detect` builds them
-  if (const Dataset* ds = source->dataset()) pipeline.set_world_up(ds->up);
-  const scene::ProcessedFrame processed = scene::process_frame(*source, opt.frame, pipeline);
+  RunSettings settings;  // parameters and camera up, as `detect` takes them
+  settings.params = opt.in.parameters();
+  settings.camera_up = opt.in.camera_up();
+  scene::ProcessedFrame processed;
+  run_frame(*source, opt.frame, settings, processed);
 
   render::OsMesaWindow window(opt.width, opt.height);
   scene::TunnelScene scene;

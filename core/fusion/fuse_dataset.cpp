@@ -2,9 +2,9 @@
 
 #include <chrono>
 
+#include "core/engine/run_engine.h"
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/posed_sequence.h"
-#include "core/pipeline/pipeline.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -24,13 +24,10 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
 
   // Pass 1: poses, per-frame detection and wall samples, each frame's depth box in its own
   // camera frame (frames are not kept: memory stays flat).
-  Pipeline pipeline(params);
-  pipeline.set_world_up(ds.up);
   std::vector<Eigen::Isometry3d> poses;
   std::vector<TunnelMap> maps(static_cast<std::size_t>(n));
   std::vector<FrameWalls> walls(static_cast<std::size_t>(n));
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<std::size_t>(n));
-  FrameResult fr;
   for (int i = 0; i < n; ++i) {
     const std::size_t k = static_cast<std::size_t>(i);
     const ResolvedPose rp = resolve_frame_pose(ds, k, s.prefer_joints);
@@ -38,25 +35,36 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
       throw InputError(ds.json_path, "frames[" + std::to_string(i) +
                                          "] has neither \"pose\" nor \"joints\": fusion needs "
                                          "every camera pose");
-    DepthFrame f = ds.load_frame(k);
-    f.pose = *rp.pose;
     FusedFrame ff;
     ff.index = i;
     ff.pose_source = rp.source;
     ff.camera_to_world = ff.given_camera_to_world = *rp.pose;
+    poses.push_back(*rp.pose);
+    r.frames.push_back(std::move(ff));
+  }
+  // Detection through the run engine (frames independent: the map gives the context below).
+  RunSettings settings;
+  settings.params = params;
+  const PosedFrames frames(ds, poses);
+  RunEngine engine(settings, &frames, RunEngine::ContextRule::None);
+  const auto detect = [&](SequenceFrame& f) {
+    if (!f.ok()) std::rethrow_exception(f.error);  // the frame's InputError
+    const std::size_t k = f.index;
     if (s.detect) {
-      pipeline.run(f, fr);
-      extract_frame_walls(fr, walls[k]);
-      maps[k] = fr.map;
+      extract_frame_walls(f.result, walls[k]);
+      maps[k] = f.result.map;
       maps[k].plane_classes.clear();
       maps[k].plane_outlier.clear();
       maps[k].plane_candidate_classes.clear();
     }
-    extend_depth_bounds(f, Eigen::Isometry3d::Identity(), fo, boxes[k]);
-    poses.push_back(*rp.pose);
-    r.frames.push_back(std::move(ff));
-    if (s.progress) s.progress("detect", i + 1, n);
-  }
+    extend_depth_bounds(f.frame, Eigen::Isometry3d::Identity(), fo, boxes[k]);
+    if (s.progress) s.progress("detect", static_cast<int>(k) + 1, n);
+    return true;
+  };
+  if (s.detect)
+    engine.run(frames, detect);
+  else
+    run_frames(frames, nullptr, settings, detect);  // only the depth boxes: no stage runs
   r.timings_ms["load+detect"] = ms_since(t0);
 
   // The map along the tunnel, with the poses refined against it (arm sag), and each frame's

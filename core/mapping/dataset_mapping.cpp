@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/engine/run_engine.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/mapping/frame_walls.h"
 #include "core/util/error.h"
@@ -36,21 +37,27 @@ DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_po
   out.timings.resize(n);
   std::vector<FrameWalls> walls(n);
   double extract_ms = 0.0;
-  FrameResult result;
-  for (std::size_t k = 0; k < n; ++k) {
-    DepthFrame f = ds.load_frame(k);
-    f.pose = poses[k];  // the world frame for up
-    pipeline.run(f, result);
+  // Frames detected without context (the map gives it afterwards), each with its pose for up.
+  RunSettings settings;
+  settings.params = pipeline.params();
+  settings.camera_up = pipeline.camera_up();
+  const PosedFrames frames(ds, poses);
+  RunEngine engine(settings, &frames, RunEngine::ContextRule::None);
+  engine.run(frames, [&](SequenceFrame& f) {
+    if (!f.ok()) std::rethrow_exception(f.error);  // the frame's InputError
+    const std::size_t k = f.index;
+    const FrameResult& result = f.result;
     out.detect_ms += result.timings_ms.at("total");
     const auto t_extract = std::chrono::steady_clock::now();
     extract_frame_walls(result, walls[k]);
     extract_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_extract).count();
     out.maps[k] = result.map;
-    out.sources[k] = f.source;
+    out.sources[k] = f.frame.source;
     out.plane_counts[k] = result.planes.planes.size();
     out.timings[k] = result.timings_ms;
     if (progress) progress(k + 1);
-  }
+    return true;
+  });
   out.mapped = map_posed_sequence(out.maps, walls, poses, pipeline.params(), refine_poses);
   out.map_ms = out.mapped.map_ms + extract_ms;
   out.mapped.stations.timings_ms["map"] = out.map_ms;

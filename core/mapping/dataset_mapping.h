@@ -1,6 +1,6 @@
 #pragma once
-// A posed dataset mapped end to end, shared by `map` and `render --map`: every frame detected in
-// order (one at a time, so memory stays flat), its wall samples kept, then the poses refined
+// A posed dataset mapped end to end, shared by `map` and `render --map`: every frame detected by
+// the run engine (in order, a bounded number in flight), its wall samples kept, then the poses refined
 // against the map and the station map built (map_posed_sequence).
 #include <functional>
 #include <string>

@@ -553,10 +553,12 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
       };
       fill(w[k], run.width_m, options_.design_width_m, st.width_m, st.width_source);
       fill(h[k], run.height_m, options_.design_height_m, st.height_m, st.height_source);
-      if (st.width_source != DimensionSource::Unseen)
-        st.width_dev_mm = deviation(st.width_m, options_.design_width_m);
-      if (st.height_source != DimensionSource::Unseen)
-        st.height_dev_mm = deviation(st.height_m, options_.design_height_m);
+      // A deviation only of a measured or context value: the design is never "0.0 mm off" itself.
+      const auto assessed = [](DimensionSource s) {
+        return s == DimensionSource::Measured || s == DimensionSource::Context;
+      };
+      if (assessed(st.width_source)) st.width_dev_mm = deviation(st.width_m, options_.design_width_m);
+      if (assessed(st.height_source)) st.height_dev_mm = deviation(st.height_m, options_.design_height_m);
       const auto off = [&](const std::optional<double>& dev, DimensionSource src) {
         return dev && src != DimensionSource::Design && std::abs(*dev) > options_.tolerance_mm;
       };

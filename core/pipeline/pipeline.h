@@ -51,6 +51,7 @@ class Pipeline {
   void set_params(const Parameters& params);
   void set_world_up(const Eigen::Vector3d& up) { world_up_ = up.normalized(); }
   void set_camera_up(const std::optional<Eigen::Vector3d>& up) { camera_up_ = up; }
+  const std::optional<Eigen::Vector3d>& camera_up() const { return camera_up_; }
 
   // Runs everything from stage `from` on. Stages before `from` reuse `result`'s contents,
   // which must come from an earlier run on the same frame. A frame smaller than the normal

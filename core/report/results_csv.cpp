@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/report/json_numbers.h"
 #include "core/util/atomic_file.h"
 
 namespace tunnelmap {
@@ -20,50 +21,46 @@ void text_cell(std::ostream& out, const std::string& s) {
   out << '"';
 }
 
-// A value as the JSON document shows it: strings unquoted, null and missing empty.
-void cell(std::ostream& out, const nlohmann::json& object, const char* key) {
-  const auto it = object.find(key);
-  if (it == object.end() || it->is_null()) return;
-  if (it->is_string())
-    text_cell(out, it->get<std::string>());
-  else if (it->is_boolean())
-    out << (it->get<bool>() ? 1 : 0);
-  else
-    out << it->dump();
+// A number as the JSON document writes it (same rounding, same shortest form); unknown: empty.
+void number_cell(std::ostream& out, const std::optional<double>& v, double unit) {
+  if (v) out << nlohmann::json(round_to(*v, unit)).dump();
+}
+
+void source_cell(std::ostream& out, const std::optional<DimensionSource>& s) {
+  if (s) out << dimension_source_name(*s);
 }
 
 }  // namespace
 
-std::string detection_csv(const nlohmann::json& document) {
-  static const char* const kColumns[] = {"index",        "source",        "method", "detected",
-                                         "status",       "width_m",       "height_m",
-                                         "width_source", "height_source", "planes", "total_ms",
-                                         "reason"};
+std::string detection_csv(const DetectionDocument& document) {
   std::ostringstream out;
   out.imbue(std::locale::classic());  // no digit grouping from a global locale
-  for (const char* c : kColumns) out << (c == kColumns[0] ? "" : ",") << c;
-  out << '\n';
-  static const nlohmann::json kNone = nlohmann::json::object();
-  const auto frames = document.find("frames");
-  if (frames == document.end()) return out.str();
-  for (const nlohmann::json& f : *frames) {
-    const auto timings = f.find("timings_ms");
-    for (const char* c : kColumns) {
-      if (c != kColumns[0]) out << ',';
-      const std::string key = c;
-      if (key == "method")
-        cell(out, f.contains("method") ? f : document, c);
-      else if (key == "total_ms")
-        cell(out, timings != f.end() ? *timings : kNone, "total");
-      else
-        cell(out, f, c);
-    }
+  out << "index,source,method,detected,status,width_m,height_m,width_source,height_source,planes,total_ms,reason\n";
+  for (const DetectionRecord& r : document.frames) {
+    out << r.index << ',';
+    text_cell(out, r.source);
+    out << ',' << method_name(r.method) << ',' << (r.detected ? 1 : 0) << ',';
+    text_cell(out, r.status);
+    out << ',';
+    number_cell(out, r.width_m, 1e-5);
+    out << ',';
+    number_cell(out, r.height_m, 1e-5);
+    out << ',';
+    source_cell(out, r.width_source);
+    out << ',';
+    source_cell(out, r.height_source);
+    out << ',';
+    if (!r.error) out << r.planes;
+    out << ',';
+    number_cell(out, r.total_ms(), 1e-3);
+    out << ',';
+    text_cell(out, r.reason);
     out << '\n';
   }
   return out.str();
 }
 
-void write_detection_csv(const std::string& path, const nlohmann::json& document) {
+void write_detection_csv(const std::string& path, const DetectionDocument& document) {
   const std::string text = detection_csv(document);
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }

@@ -4,18 +4,18 @@
 // added at the end, never renamed or moved):
 //   index,source,method,detected,status,width_m,height_m,width_source,height_source,planes,
 //   total_ms,reason
-// Numbers are written exactly as in the JSON document; a null (unknown width, ...) is an empty
-// cell; text with a comma, quote or line break is quoted (RFC 4180).
-#include <nlohmann/json_fwd.hpp>
+// Numbers are written exactly as in the JSON document; an unknown value (width, ...) is an empty
+// cell; text with a comma, quote or line break is quoted (RFC 4180). Read from the typed records,
+// never from the JSON.
 #include <string>
+
+#include "core/report/results_json.h"
 
 namespace tunnelmap {
 
-// `document` as detection_document() builds it; a frame's own "method" (the GUI's rows can
-// differ) wins over the document's.
-std::string detection_csv(const nlohmann::json& document);
+std::string detection_csv(const DetectionDocument& document);
 
 // Written atomically, like every output.
-void write_detection_csv(const std::string& path, const nlohmann::json& document);
+void write_detection_csv(const std::string& path, const DetectionDocument& document);
 
 }  // namespace tunnelmap

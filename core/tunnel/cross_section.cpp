@@ -90,6 +90,10 @@ CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& pla
     out.points.swap(kept);
   }
   out.fitted = fitted_rect(map, f);
+  if (out.fitted) {
+    out.width_source = map.width_source;
+    out.height_source = map.height_source;
+  }
   if (out.fitted && design_width_m && design_height_m && *design_width_m > 0 && *design_height_m > 0) {
     const double cx = 0.5 * (out.fitted->left + out.fitted->right);
     const double cy = 0.5 * (out.fitted->bottom + out.fitted->top);

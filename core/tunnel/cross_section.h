@@ -32,6 +32,9 @@ struct CrossSection {
   std::vector<SectionPoint> points;
   std::optional<SectionRect> fitted;  // from the walls' planes; a missing wall from the known size
   std::optional<SectionRect> design;  // the design size, centred on the fitted rectangle
+  // Where the fitted rectangle's width and height come from (the map's sources): a dimension
+  // filled from the design equals it by construction and is no deviation from it.
+  DimensionSource width_source = DimensionSource::Unseen, height_source = DimensionSource::Unseen;
 };
 
 // Stations seen by a map: the visible axial extent as distances ahead of the camera.

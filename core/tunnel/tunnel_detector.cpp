@@ -401,7 +401,8 @@ void run(const PlaneSegments& planes, const Eigen::Vector3d& up_camera, const Tu
   infer_from_design(measured, 0, 1, opt.design_width_m, offsets, map.width_source, map.width_m, map);
   infer_from_design(measured, 2, 3, opt.design_height_m, offsets, map.height_source, map.height_m,
                     map);
-  if (map.width_source == DimensionSource::Unseen && map.height_source == DimensionSource::Unseen) {
+  // A design never makes a tunnel by itself: the frame must measure at least one dimension.
+  if (map.width_source != DimensionSource::Measured && map.height_source != DimensionSource::Measured) {
     fail(map, TunnelStatus::MissingWall);
     set_text(map.reason, "neither the width nor the height was measured (walls seen: %s%s%s%s)",
              measured[0] ? "left " : "", measured[1] ? "right " : "", measured[2] ? "top " : "",

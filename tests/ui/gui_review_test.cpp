@@ -379,7 +379,10 @@ class GuiReviewTest : public QObject {
     QVERIFY2(summary.contains(" mm vs ground truth"), qPrintable(summary));
     // The error printed is the mean |width - 0.820|: recompute it from the rows.
     double ew = 0;
-    for (const auto& r : w.results_panel()->records()) ew += std::abs(r.width_m - 0.82) * 1000 / kFrames;
+    for (const auto& r : w.results_panel()->records()) {
+      QVERIFY(r.width_m);
+      ew += std::abs(*r.width_m - 0.82) * 1000 / kFrames;
+    }
     QVERIFY2(summary.contains(QString("error %1 / ").arg(ew, 0, 'f', 1)), qPrintable(QString::number(ew)));
     QCOMPARE(table->item(3, 7)->text(), QString("#1"));
 

@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QProcess>
+#include <QProgressBar>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -269,6 +270,57 @@ class GuiTest : public QObject {
     QCOMPARE(c.size(), 2);
     QCOMPARE(g[0], c[0]);
     QCOMPARE(g[1].section(',', 0, 9), c[1].section(',', 0, 9));
+  }
+
+  // Process whole sequence runs `detect`'s engine: on a folder of PNGs (recent-frames context),
+  // a posed walk over three sections (station-map context) and a TUM sequence, the GUI's
+  // exported results equal `detect --json` with the exported parameters, field for field,
+  // timings aside.
+  void sequenceExportEqualsDetectOnEveryInputKind() {
+    const QString walk = dir_.filePath("walk"), tum = dir_.filePath("tum");
+    QProcess sim;
+    sim.start(TUNNELMAP_CLI_PATH, {"simulate", "--preset", "lab", "--frames", "14", "--seed", "4", "--quiet",
+                                   "--sections", "1.2:0.84x1.30,1.2:0.80x1.28,2:0.82x1.32", "--walk", "-0.6,2.9,5",
+                                   "--walk-pose", "0,0.5,0", walk});
+    QVERIFY(sim.waitForFinished(60000));
+    QCOMPARE(sim.exitCode(), 0);
+    sim.start(TUNNELMAP_CLI_PATH, {"simulate", "--preset", "lab", "--frames", "6", "--quiet", "--format", "tum", tum});
+    QVERIFY(sim.waitForFinished(60000));
+    QCOMPARE(sim.exitCode(), 0);
+    const auto read = [](const QString& path) {
+      QFile f(path);
+      return f.open(QIODevice::ReadOnly) ? nlohmann::json::parse(f.readAll().toStdString()) : nlohmann::json();
+    };
+    const auto comparable = [](nlohmann::json doc) {
+      for (auto& f : doc["frames"]) f.erase("timings_ms");
+      doc["summary"].erase("total_ms_median");
+      doc.erase("input");  // the GUI's absolute path
+      return QString::fromStdString(doc.dump(1));
+    };
+    const struct { QString input; int frames; } inputs[] = {{walk + "/depth", 14}, {walk, 14}, {tum, 6}};
+    for (const auto& in : inputs) {
+      MainWindow w;
+      w.suppress_dialogs = true;
+      w.show();
+      QVERIFY2(w.open_input(in.input), qPrintable(w.last_error()));
+      QVERIFY(wait_frame(w));
+      w.process_sequence();
+      QTRY_VERIFY_WITH_TIMEOUT(int(w.results_panel()->records().size()) == in.frames &&
+                                   !w.findChild<QProgressBar*>()->isVisible(), 60000);
+      // Viewing a frame afterwards (alone, without the context) keeps the sequence's row.
+      QVERIFY(w.select_frame(in.frames - 1));
+      QVERIFY(wait_frame(w));
+      const QString gui = dir_.filePath("seq_gui.json"), cli = dir_.filePath("seq_cli.json");
+      QVERIFY(w.export_results_json(gui));
+      QProcess detect;
+      detect.start(TUNNELMAP_CLI_PATH, {"detect", in.input, "-q", "--params", gui, "--json", cli});
+      QVERIFY(detect.waitForFinished(120000));
+      QVERIFY2(detect.exitCode() == 0, detect.readAllStandardError().constData());
+      const nlohmann::json g = read(gui), d = read(cli);
+      QCOMPARE(int(g["frames"].size()), in.frames);
+      QVERIFY2(g["summary"]["detected"].get<int>() >= in.frames - 1, qPrintable(in.input));
+      QCOMPARE(comparable(g), comparable(d));
+    }
   }
 
   // Method selector: switching the combo to Qhull re-runs the frame with the convex-hull baseline;

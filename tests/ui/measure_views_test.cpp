@@ -73,6 +73,15 @@ class CrossSectionTest : public QObject {
     const QString caption = panel.view()->caption();
     QVERIFY2(caption.contains("width 1.000 m, height 0.800 m"), qPrintable(caption));
     QVERIFY2(caption.contains("width 20.0 mm, height 20.0 mm"), qPrintable(caption));
+    // A height filled from the design is labelled so, never "0.0 mm" off.
+    auto from_design = std::make_shared<tunnelmap::scene::ProcessedFrame>(*tunnel());
+    from_design->result.map.status = tunnelmap::TunnelStatus::Partial;
+    from_design->result.map.height_source = tunnelmap::DimensionSource::Design;
+    panel.set_frame(from_design, 0.98, 0.78);
+    const QString design_caption = panel.view()->caption();
+    QVERIFY2(design_caption.contains("width 20.0 mm, height from design"), qPrintable(design_caption));
+    QVERIFY2(!design_caption.contains("height 0.0 mm"), qPrintable(design_caption));
+    panel.set_frame(tunnel(), 0.98, 0.78);
 
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR"))
       panel.view()->grab().toImage().save(QString(dir) + "/cross_section.png");

@@ -52,10 +52,10 @@ SequenceScore run_sequence(const std::string& preset, unsigned seed, int frames,
   SequenceScore s;
   s.frames = summary.frames;
   s.detected = summary.detected;
-  s.width_err_mm = summary.width_abs_error_mean_m * 1000;
-  s.height_err_mm = summary.height_abs_error_mean_m * 1000;
-  s.width_std_mm = summary.width_std_m * 1000;
-  s.height_std_mm = summary.height_std_m * 1000;
+  s.width_err_mm = summary.width_abs_error_mean_m.value_or(NAN) * 1000;
+  s.height_err_mm = summary.height_abs_error_mean_m.value_or(NAN) * 1000;
+  s.width_std_mm = summary.width_std_m.value_or(NAN) * 1000;
+  s.height_std_mm = summary.height_std_m.value_or(NAN) * 1000;
   std::printf("%s seed %u grid step %d (0 = default): %d/%d detected, |error| w %.2f h %.2f mm, sigma w %.2f h %.2f mm\n",
               preset.c_str(), seed, grid_step, s.detected, s.frames, s.width_err_mm, s.height_err_mm,
               s.width_std_mm, s.height_std_mm);

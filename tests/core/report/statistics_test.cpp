@@ -70,8 +70,10 @@ TEST(Statistics, DetectionSummaryUsesTheSampleSigmaOfMeasuredValues) {
   EXPECT_EQ(summary.detected, 4);
   EXPECT_EQ(summary.partial, 1);
   // mean 0.81, deviations -0.02 -0.01 0.03: (4e-4 + 1e-4 + 9e-4) / 2 = 7e-4 -> sigma 0.026458
-  EXPECT_NEAR(summary.width_mean_m, 0.81, 1e-12);
-  EXPECT_NEAR(summary.width_std_m, std::sqrt(7e-4), 1e-12);
-  EXPECT_NEAR(summary.height_std_m, 0.0, 1e-12);
-  EXPECT_NEAR(summary.width_abs_error_mean_m, (0.01 + 0.0 + 0.04) / 3, 1e-12);
+  EXPECT_EQ(summary.width_frames, 3);
+  EXPECT_EQ(summary.height_frames, 4);
+  EXPECT_NEAR(summary.width_mean_m.value(), 0.81, 1e-12);
+  EXPECT_NEAR(summary.width_std_m.value(), std::sqrt(7e-4), 1e-12);
+  EXPECT_NEAR(summary.height_std_m.value(), 0.0, 1e-12);
+  EXPECT_NEAR(summary.width_abs_error_mean_m.value(), (0.01 + 0.0 + 0.04) / 3, 1e-12);
 }

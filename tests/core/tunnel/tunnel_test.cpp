@@ -338,6 +338,22 @@ TEST(TunnelDetector, TwoAdjacentWallsMeasureNothingWithoutADesign) {
   EXPECT_NE(m.reason.find("neither the width nor the height"), std::string::npos) << m.reason;
 }
 
+// The design fills a dimension the frame did not measure; it never makes a tunnel by itself:
+// with one wall of each pair seen (a floor and a side wall: a room's corner), nothing is
+// measured, so a full design is no reason to report a tunnel.
+TEST(TunnelDetector, ADesignAloneMakesNoTunnel) {
+  SceneSpec spec;
+  spec.with[static_cast<int>(WallClass::Top)] = false;
+  spec.with[static_cast<int>(WallClass::Right)] = false;
+  TunnelOptions o;
+  o.design_width_m = 0.82;
+  o.design_height_m = 1.30;
+  const TunnelMap m = detect(SceneBuilder(spec).build(), o);
+  EXPECT_FALSE(m.detected);
+  EXPECT_EQ(m.status, TunnelStatus::MissingWall);
+  EXPECT_EQ(m.reason, "neither the width nor the height was measured (walls seen: left bottom)");
+}
+
 TEST(TunnelDetector, OutOfTemplateWhenThePriorIsNarrowed) {
   TunnelOptions o = fine_options();
   o.width_max_m = 0.70;

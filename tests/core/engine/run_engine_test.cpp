@@ -1,0 +1,139 @@
+// The run engine: the context rule (the station map for posed frames, so a real section change
+// is followed, not rejected), parallel runs equal to serial ones, cancellation, and a single
+// frame re-run from the first stage a parameter change affects, equal to a full run.
+#include <gtest/gtest.h>
+
+#include "core/engine/frame_run.h"
+#include "core/engine/run_engine.h"
+#include "core/report/results_json.h"
+#include "core/io/json_file.h"
+#include "core/planes/grow_options.h"
+#include "core/tunnel/tunnel_options.h"
+#include "tests/support/cli_runner.h"
+
+using namespace tunnelmap;
+using namespace tunnelmap::testing;
+
+namespace {
+
+const std::string kLabPreset = std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/lab.json";
+
+// A posed walk over two sections of different width, simulated once for the suite.
+class SectionWalkEngine : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir = std::make_unique<IoTempDir>();
+    const CliRun sim = run_cli("simulate " + dir->file("walk") +
+                               " --preset lab --frames 16 --seed 3 --quiet"
+                               " --sections 1.2:0.84x1.30,2:0.78x1.28 --walk -0.6,2.4,6 --walk-pose 0,0.5,0");
+    ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  }
+  static void TearDownTestSuite() { dir.reset(); }
+  static RunSettings lab_settings(int threads) {
+    RunSettings s;
+    s.params.load_json_file(kLabPreset);
+    s.threads = threads;
+    return s;
+  }
+  // Every frame's results JSON, timings aside.
+  static std::vector<nlohmann::json> run_all(const FrameSource& source, RunEngine& engine) {
+    std::vector<nlohmann::json> frames;
+    engine.run(source, [&](SequenceFrame& f) {
+      EXPECT_TRUE(f.ok()) << f.error_message;
+      nlohmann::json j = detection_frame_json(f.index, f.frame.source, f.result);
+      j.erase("timings_ms");
+      frames.push_back(std::move(j));
+      return true;
+    });
+    return frames;
+  }
+  static std::unique_ptr<IoTempDir> dir;
+};
+std::unique_ptr<IoTempDir> SectionWalkEngine::dir;
+
+TEST_F(SectionWalkEngine, PosedFramesFollowTheSectionChangeThroughTheStationMap) {
+  const auto source = open_input(dir->file("walk"), ReadOptions());
+  ASSERT_NE(source->dataset(), nullptr);
+  const nlohmann::json truth = read_json_file(dir->file("walk/dataset.json"))["ground_truth"]["sections"];
+  ASSERT_EQ(truth.size(), 2u);
+  RunEngine engine(lab_settings(2), source.get());
+  const std::vector<nlohmann::json> frames = run_all(*source, engine);
+  ASSERT_EQ(frames.size(), 16u);
+  EXPECT_EQ(engine.context().stations().frames(), 16);  // every frame went into the map
+  int detected = 0, rejected = 0;
+  for (const auto& f : frames) {
+    detected += f["detected"].get<bool>();
+    rejected += f["status"] == "inconsistent_with_context";
+  }
+  // The recent-frames context would reject the narrower section; the station map follows it.
+  EXPECT_EQ(rejected, 0);
+  EXPECT_GE(detected, 15);
+  double narrow = 1.0, wide = 0.0;
+  for (const auto& f : frames)
+    if (f["width_source"] == "measured") {
+      narrow = std::min(narrow, f["width_m"].get<double>());
+      wide = std::max(wide, f["width_m"].get<double>());
+    }
+  EXPECT_NEAR(wide, 0.84, 0.012);
+  EXPECT_NEAR(narrow, 0.78, 0.012);
+}
+
+TEST_F(SectionWalkEngine, TwoThreadsEqualOneFieldForField) {
+  const auto source = open_input(dir->file("walk"), ReadOptions());
+  RunEngine serial(lab_settings(1), source.get()), parallel(lab_settings(2), source.get());
+  EXPECT_EQ(run_all(*source, parallel), run_all(*source, serial));
+}
+
+TEST_F(SectionWalkEngine, CancelStopsTheRunAfterTheFrameBeingDelivered) {
+  const auto source = open_input(dir->file("walk"), ReadOptions());
+  RunEngine engine(lab_settings(2), source.get());
+  std::size_t delivered = 0, last_progress = 0;
+  const SequenceStats stats = engine.run(
+      *source,
+      [&](SequenceFrame& f) {
+        if (++delivered == 3) engine.cancel();
+        return f.ok();
+      },
+      [&](std::size_t done, std::size_t total) {
+        EXPECT_EQ(total, 16u);
+        last_progress = done;
+      });
+  EXPECT_TRUE(stats.stopped);
+  EXPECT_EQ(delivered, 3u);
+  EXPECT_EQ(last_progress, 3u);
+  EXPECT_TRUE(engine.cancelled());
+}
+
+TEST(FirstChangedStage, IsTheEarliestStageOfAnyChangedParameter) {
+  Parameters a, b;
+  EXPECT_FALSE(first_changed_stage(a, b));
+  b.set(tunnel_keys::design_width_m, 0.82);
+  EXPECT_EQ(first_changed_stage(a, b), Stage::Tunnel);
+  b.set(grow_keys::distance_mm, 20.0);
+  EXPECT_EQ(first_changed_stage(a, b), Stage::Planes);
+}
+
+TEST(RunFrame, ARerunFromTheChangedStageEqualsAFullRun) {
+  const auto source = open_input(std::string(TUNNELMAP_TEST_DATA_DIR) + "/sample/lab/depth/000000.png", ReadOptions());
+  RunSettings before;
+  before.params.load_json_file(kLabPreset);
+  FrameRun run;
+  EXPECT_EQ(run_frame(*source, 0, before, run), Stage::Cloud);
+  ASSERT_TRUE(run.result.map.detected);
+  RunSettings after = before;
+  after.params.set(tunnel_keys::design_width_m, 0.82);
+  after.params.set(tunnel_keys::design_height_m, 1.30);
+  EXPECT_EQ(run_frame(*source, 0, after, run, &before), Stage::Tunnel);
+  FrameRun full;
+  EXPECT_EQ(run_frame(*source, 0, after, full), Stage::Cloud);
+  nlohmann::json rerun_json = detection_frame_json(0, "", run.result), full_json = detection_frame_json(0, "", full.result);
+  rerun_json.erase("timings_ms");
+  full_json.erase("timings_ms");
+  EXPECT_EQ(rerun_json, full_json);
+  // Another method re-runs the whole frame.
+  RunSettings qhull = after;
+  qhull.method = Method::Qhull;
+  EXPECT_EQ(run_frame(*source, 0, qhull, run, &after), Stage::Cloud);
+}
+
+}  // namespace
