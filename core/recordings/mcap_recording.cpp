@@ -133,9 +133,10 @@ class McapRecording : public Recording {
   }
 
   // Schemas and channels met while scanning are registered even from the const read path.
-  void add_schema(const Schema& s) const { schemas_[s.id] = s; }
+  // The first definition of an id wins: a later record cannot move messages to another topic.
+  void add_schema(const Schema& s) const { schemas_.emplace(s.id, s); }
   void add_channel(const Channel& ch) const {
-    channels_[ch.id] = ch;
+    if (!channels_.emplace(ch.id, ch).second) return;
     const auto s = schemas_.find(ch.schema_id);
     tally_.declare(ch.topic, s == schemas_.end() ? std::string() : s->second.name);
   }

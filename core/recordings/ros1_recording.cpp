@@ -162,8 +162,9 @@ class Ros1Recording : public Recording {
     return it->second.topic;
   }
 
+  // The first definition of an id wins: a later record cannot move messages to another topic.
   void add_connection(const Connection& conn) const {
-    connections_[conn.id] = conn;
+    if (!connections_.emplace(conn.id, conn).second) return;
     tally_.declare(conn.topic, conn.type);
   }
 

@@ -48,15 +48,16 @@ inline void expect_same_frames(const Dataset& ds, const std::string& bag) {
   }
 }
 
-// `detect INPUT --json` through the real CLI.
-inline nlohmann::json detect_json(const IoTempDir& tmp, const std::string& input, const std::string& name) {
+// `COMMAND INPUT --json` (detect by default) through the real CLI.
+inline nlohmann::json detect_json(const IoTempDir& tmp, const std::string& input, const std::string& name,
+                                  const std::string& command = "detect") {
   const std::string out = tmp.file(name + ".json");
-  const CliRun r = run_cli("detect " + input + " --quiet --json " + out);
+  const CliRun r = run_cli(command + " " + input + " --quiet --json " + out);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return nlohmann::json::parse(slurp(out));
 }
 
-// The same statuses, and widths and heights within 0.5 mm.
+// The same statuses, widths and heights within 0.5 mm, and (map) poses within 1e-6.
 inline void expect_same_detections(const nlohmann::json& a, const nlohmann::json& b) {
   ASSERT_EQ(a["frames"].size(), b["frames"].size());
   for (std::size_t i = 0; i < a["frames"].size(); ++i) {
@@ -67,6 +68,12 @@ inline void expect_same_detections(const nlohmann::json& a, const nlohmann::json
       ASSERT_EQ(fa[key].is_null(), fb[key].is_null()) << i << key;
       if (!fa[key].is_null()) EXPECT_NEAR(fa[key].get<double>(), fb[key].get<double>(), 0.0005) << i << key;
     }
+    ASSERT_EQ(fa.contains("camera_to_world"), fb.contains("camera_to_world"));
+    if (!fa.contains("camera_to_world")) continue;
+    const auto pa = fa["camera_to_world"].flatten(), pb = fb["camera_to_world"].flatten();
+    ASSERT_EQ(pa.size(), pb.size());
+    for (auto it = pa.begin(); it != pa.end(); ++it)
+      if (it->is_number()) EXPECT_NEAR(it->get<double>(), pb[it.key()].get<double>(), 1e-6) << i << it.key();
   }
 }
 

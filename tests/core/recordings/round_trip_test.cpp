@@ -60,6 +60,24 @@ TEST(RecordingRoundTrip, McapLz4AndDb3ReadBackAsTheDataset) {
   expect_same_detections(detect_json(seq.tmp, seq.dataset_dir, "original"), detect_json(seq.tmp, db3, "db3"));
 }
 
+TEST(RecordingRoundTrip, MapAndConvertTakeTheBag) {
+  const SimulatedSequence seq;
+  const std::string bag = write_mcap(seq, "zstd");
+  const nlohmann::json original = detect_json(seq.tmp, seq.dataset_dir, "map_original", "map");
+  const nlohmann::json from_bag = detect_json(seq.tmp, bag, "map_bag", "map");
+  ASSERT_EQ(original["frames"].size(), 4u);
+  EXPECT_TRUE(original["frames"][0].contains("camera_to_world"));
+  expect_same_detections(original, from_bag);
+
+  const std::string tum = seq.tmp.file("tum");
+  const testing::CliRun r = testing::run_cli("convert " + bag + " " + tum + " --to tum");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote 4 frames (4 with colour, 4 with a pose)"), std::string::npos) << r.out;
+  const Dataset converted = read_dataset(tum);
+  ASSERT_EQ(converted.frames.size(), 4u);
+  EXPECT_LT((converted.frames[3].pose->matrix() - seq.ds.frames[3].pose->matrix()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
 TEST(RecordingRoundTrip, EveryAndDurationSelectFrames) {
   const SimulatedSequence seq;
   const std::string bag = write_mcap(seq, "");
