@@ -160,7 +160,11 @@ class McapRecording : public Recording {
       const std::uint8_t op = hc.u8();
       const std::uint64_t len = hc.u64();
       if (op == kFooter || op == kDataEnd) return;
-      if (!file_.read_at(pos + kRecordHeader, len, content)) return note_truncation(pos);
+      if (!file_.read_at(pos + kRecordHeader, len, content)) {
+        note_truncation(pos);
+        if (op == kChunk) read_cut_chunk(pos + kRecordHeader, emit);
+        return;
+      }
       if (!handle_data_record(op, ByteCursor(content.data(), content.size()), emit)) return;
       pos += kRecordHeader + len;
     }
@@ -168,7 +172,7 @@ class McapRecording : public Recording {
 
   void note_truncation(std::uint64_t pos) const {
     summary_.truncation_note = "the file ends inside the record at byte " + std::to_string(pos) +
-                               "; read up to the last whole record";
+                               "; read up to the last whole message";
   }
 
   // Returns false when `emit` asked to stop.
@@ -183,6 +187,33 @@ class McapRecording : public Recording {
     return true;
   }
 
+  // An uncompressed chunk cut by the end of the file still holds whole messages before the
+  // cut (a compressed one cannot be decoded in part).
+  void read_cut_chunk(std::uint64_t content_pos, const Emit& emit) const {
+    if (!file_.read_at(content_pos, file_.size() - content_pos, record_buffer_)) return;
+    ByteCursor c(record_buffer_.data(), record_buffer_.size());
+    std::vector<PendingMessage> messages;
+    try {
+      const ChunkHeader h = parse_chunk_header(c);
+      if (!h.compression.empty()) return;
+      collect_chunk_messages(c, messages);
+    } catch (const TruncatedData&) {
+    }
+    emit_sorted(messages, emit);
+  }
+
+  // The chunk's records into `messages`, up to the last whole one when cut (TruncatedData
+  // then propagates after the whole records were kept).
+  void collect_chunk_messages(ByteCursor c, std::vector<PendingMessage>& messages) const {
+    for_each_record(c, [&](std::uint8_t op, ByteCursor r) {
+      if (op == kSchema) add_schema(parse_schema(r));
+      if (op == kChannel) add_channel(parse_channel(r));
+      if (op != kMessage) return;
+      const MessageHeader m = parse_message_header(r);
+      messages.push_back({m.log_time, m.channel_id, r.here(), r.remaining()});
+    });
+  }
+
   bool visit_chunk(ByteCursor c, const Emit& emit) const {
     const ChunkHeader h = parse_chunk_header(c);
     ByteCursor compressed = c.sub(h.records_size);
@@ -193,14 +224,11 @@ class McapRecording : public Recording {
       throw InputError(file_.path(), std::string("MCAP chunk: ") + e.what());
     }
     std::vector<PendingMessage> messages;
-    for_each_record(ByteCursor(chunk_buffer_.data(), chunk_buffer_.size()),
-                    [&](std::uint8_t op, ByteCursor r) {
-                      if (op == kSchema) add_schema(parse_schema(r));
-                      if (op == kChannel) add_channel(parse_channel(r));
-                      if (op != kMessage) return;
-                      const MessageHeader m = parse_message_header(r);
-                      messages.push_back({m.log_time, m.channel_id, r.here(), r.remaining()});
-                    });
+    collect_chunk_messages(ByteCursor(chunk_buffer_.data(), chunk_buffer_.size()), messages);
+    return emit_sorted(messages, emit);
+  }
+
+  bool emit_sorted(std::vector<PendingMessage>& messages, const Emit& emit) const {
     std::stable_sort(messages.begin(), messages.end(),
                      [](const PendingMessage& a, const PendingMessage& b) { return a.log_time < b.log_time; });
     for (const PendingMessage& m : messages)

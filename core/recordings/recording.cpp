@@ -137,6 +137,8 @@ bool is_recording_path(const std::string& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     if (fs::exists(fs::path(path) / "metadata.yaml", ec)) return true;
+    // A dataset or TUM sequence folder stays one even with a bag file lying beside it.
+    if (fs::exists(fs::path(path) / "dataset.json", ec) || fs::exists(fs::path(path) / "depth.txt", ec)) return false;
     for (const auto& e : fs::directory_iterator(path, ec))
       if (e.is_regular_file() && is_storage_file(e.path())) return true;
     return false;

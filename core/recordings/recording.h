@@ -17,7 +17,7 @@ enum class MessageEncoding { Cdr, Ros1 };
 
 struct TopicInfo {
   std::string name;
-  std::string type;  // normalised to "pkg/msg/Name" for ROS 2 and "pkg/Name" for ROS 1
+  std::string type;  // as recorded: "pkg/msg/Name" (ROS 2), "pkg/Name" (ROS 1)
   std::uint64_t message_count = 0;
   std::optional<std::int64_t> first_time_ns, last_time_ns;  // unknown for an empty topic
 
@@ -54,7 +54,7 @@ class Recording {
 };
 
 // True when `path` looks like a recording (.mcap, .db3, .bag, or a folder holding
-// metadata.yaml or bag files).
+// metadata.yaml, or bag files and no dataset.json or depth.txt).
 bool is_recording_path(const std::string& path);
 
 // Opens a recording by extension, folder contents or magic bytes. InputError (one line naming

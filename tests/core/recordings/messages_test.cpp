@@ -93,18 +93,21 @@ TEST(RecordingMessages, Ros1ImageAndOdometry) {
   });
 }
 
+// The first `bytes` of a recording, as a robot losing power leaves it.
+std::string cut_copy(const testing::IoTempDir& tmp, const std::string& file, std::size_t bytes) {
+  const std::string cut = tmp.file("cut" + std::filesystem::path(file).extension().string());
+  std::ifstream in(testing::recording(file), std::ios::binary);
+  std::vector<char> head(bytes);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  std::ofstream(cut, std::ios::binary).write(head.data(), in.gcount());
+  return cut;
+}
+
 // The uncompressed turtlesim bag cut in its only chunk: the messages before the cut are read.
 TEST(RecordingMessages, TruncatedBagReadsUpToItsLastWholeMessage) {
   SKIP_WITHOUT_RECORDINGS();
   testing::IoTempDir tmp;
-  const std::string cut = tmp.file("cut.bag");
-  {
-    std::ifstream in(testing::recording("ros1_bag/rosbagjs_example.bag"), std::ios::binary);
-    std::vector<char> head(500000);
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    std::ofstream(cut, std::ios::binary).write(head.data(), static_cast<std::streamsize>(head.size()));
-  }
-  const auto rec = open_recording(cut);
+  const auto rec = open_recording(cut_copy(tmp, "ros1_bag/rosbagjs_example.bag", 500000));
   ASSERT_TRUE(rec->summary().truncation_note.has_value());
   EXPECT_NE(rec->summary().truncation_note->find("last whole message"), std::string::npos);
   const std::uint64_t counted = rec->summary().message_count();
@@ -113,6 +116,18 @@ TEST(RecordingMessages, TruncatedBagReadsUpToItsLastWholeMessage) {
   std::uint64_t read = 0;
   rec->read_messages({}, [&](const MessageView&) { return ++read > 0; });
   EXPECT_EQ(read, counted);
+}
+
+// rosbag2's cdr_test MCAP (one uncompressed chunk of 7 messages) cut inside its chunk.
+TEST(RecordingMessages, TruncatedMcapReadsUpToItsLastWholeMessage) {
+  SKIP_WITHOUT_RECORDINGS();
+  testing::IoTempDir tmp;
+  const auto rec = open_recording(cut_copy(tmp, "mcap/rosbag2_cdr_test/cdr_test_0.mcap", 6000));
+  ASSERT_TRUE(rec->summary().truncation_note.has_value());
+  EXPECT_EQ(rec->summary().message_count(), 6u);
+  std::uint64_t read = 0;
+  rec->read_messages({}, [&](const MessageView&) { return ++read > 0; });
+  EXPECT_EQ(read, 6u);
 }
 
 }  // namespace
