@@ -78,6 +78,14 @@ TEST(RecordingRoundTrip, MapAndConvertTakeTheBag) {
   EXPECT_LT((converted.frames[3].pose->matrix() - seq.ds.frames[3].pose->matrix()).cwiseAbs().maxCoeff(), 1e-6);
 }
 
+TEST(RecordingRoundTrip, FuseTakesTheBag) {
+  const SimulatedSequence seq;
+  const std::string bag = write_db3(seq);
+  const nlohmann::json original = detect_json(seq.tmp, seq.dataset_dir, "fuse_original", "fuse");
+  ASSERT_EQ(original["frames"].size(), 4u);
+  expect_same_detections(original, detect_json(seq.tmp, bag, "fuse_bag", "fuse"));
+}
+
 TEST(RecordingRoundTrip, EveryAndDurationSelectFrames) {
   const SimulatedSequence seq;
   const std::string bag = write_mcap(seq, "");
