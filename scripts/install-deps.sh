@@ -13,6 +13,8 @@ PACKAGES=(
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  libsqlite3-dev libzstd-dev liblz4-dev libbz2-dev
+  librosbag-storage-dev pluginlib-dev librcpputils-dev librcutils-dev libament-index-cpp-dev libtinyxml2-dev
   xvfb xauth
   dpkg-dev file help2man poppler-utils
   clang libclang-rt-14-dev

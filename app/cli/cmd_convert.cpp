@@ -1,5 +1,6 @@
 // `tunnelmap-cli convert INPUT OUT_DIR --to tum|dataset`: moves a sequence between the dataset
-// layout (dataset.json) and the TUM RGB-D layout (depth.txt, rgb.txt, groundtruth.txt).
+// layout (dataset.json) and the TUM RGB-D layout (depth.txt, rgb.txt, groundtruth.txt), and
+// extracts a robot recording (ROS bag) into either.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "core/io/tum_sequence.h"
 #include "core/io/tum_writer.h"
 #include "core/kinematics/frame_pose.h"
+#include "core/recordings/recording.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -29,15 +31,16 @@ struct ConvertOptions {
 void require_sequence(const std::string& input) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (is_tum_sequence(input) || fs::is_directory(input, ec)) return;
+  if (is_tum_sequence(input) || fs::is_directory(input, ec) || recordings::is_recording_path(input)) return;
   if (fs::exists(input, ec) && fs::path(input).extension() != ".json")
-    throw InputError(input, "convert reads a dataset folder (dataset.json) or a TUM RGB-D sequence "
-                            "(folder with depth.txt)");
+    throw InputError(input, "convert reads a dataset folder (dataset.json), a TUM RGB-D sequence "
+                            "(folder with depth.txt) or a ROS bag (.bag, .mcap, .db3)");
 }
 
 void run(const ConvertOptions& o, CliContext& ctx) {
   require_sequence(o.in.input);
-  const Dataset ds = read_dataset(o.in.input, o.in.read_options());
+  const DatasetInput input(o.in);
+  const Dataset& ds = input.dataset();
   SequenceExport ex;
   std::size_t posed = 0, coloured = 0;
   for (std::size_t i = 0; i < ds.frames.size(); ++i) {
@@ -65,7 +68,8 @@ void add_convert_command(CLI::App& app, CliContext& ctx) {
   auto o = std::make_shared<ConvertOptions>();
   CLI::App* cmd = app.add_subcommand(
       "convert", "Convert a sequence between the dataset layout and the TUM RGB-D layout");
-  cmd->add_option("INPUT", o->in.input, "Dataset folder (or its dataset.json) or TUM RGB-D sequence folder")
+  cmd->add_option("INPUT", o->in.input,
+                  "Dataset folder (or its dataset.json), TUM RGB-D sequence folder or ROS bag")
       ->required();
   cmd->add_option("OUT_DIR", o->out_dir, "Output folder (new or empty)")->required();
   cmd->add_option("--to", o->to, "Layout to write: tum (depth.txt, rgb.txt, groundtruth.txt) or "

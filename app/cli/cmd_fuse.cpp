@@ -72,7 +72,8 @@ void check_new_folder(const std::string& dir) {
 
 void run(const FuseOptions& o, CliContext& ctx) {
   const Parameters params = o.in.parameters();
-  const Dataset ds = read_dataset(o.in.input, o.in.read_options());
+  const DatasetInput input(o.in);  // a dataset, a TUM sequence or a robot recording
+  const Dataset& ds = input.dataset();
   for (const std::string& p : {o.mesh_path, o.map_path, o.json_path})
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
   if (!o.refined_dataset.empty()) check_new_folder(o.refined_dataset);

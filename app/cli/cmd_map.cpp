@@ -163,7 +163,8 @@ void run(const MapOptions& o, CliContext& ctx) {
   const Parameters params = map_parameters(o);
   Pipeline pipeline = o.in.pipeline();
   pipeline.set_params(params);
-  const Dataset ds = read_dataset(o.in.input, o.in.read_options());
+  const DatasetInput input(o.in);  // a dataset, a TUM sequence or a robot recording
+  const Dataset& ds = input.dataset();
 #ifndef TUNNELMAP_HAVE_REPORT
   if (!o.report_path.empty())
     throw ParameterError("--report needs the Qt build of tunnelmap (configure with -DTUNNELMAP_BUILD_GUI=ON)");

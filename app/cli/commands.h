@@ -17,6 +17,7 @@ void add_simulate_command(CLI::App& app, CliContext& ctx);
 void add_fuse_command(CLI::App& app, CliContext& ctx);
 void add_map_command(CLI::App& app, CliContext& ctx);
 void add_convert_command(CLI::App& app, CliContext& ctx);
+void add_topics_command(CLI::App& app, CliContext& ctx);  // ROS bags (core/recordings)
 void add_evaluate_command(CLI::App& app, CliContext& ctx);
 void add_devices_command(CLI::App& app, CliContext& ctx);  // OpenNI2 (sensors/openni)
 void add_record_command(CLI::App& app, CliContext& ctx);   // OpenNI2 (sensors/openni)

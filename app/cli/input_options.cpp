@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "core/recordings/recording.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -33,8 +34,24 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count, co
 }
 }  // namespace
 
+namespace {
+// Robot recordings (ROS bags): see docs/recordings.md and `tunnelmap-cli topics BAG`.
+void add_recording_options(CLI::App* cmd, recordings::RecordingOptions& r) {
+  const std::string group = "ROS bags";
+  cmd->add_option("--depth-topic", r.depth_topic, "Bag: depth image topic (16UC1, 32FC1 or compressedDepth)")->group(group);
+  cmd->add_option("--color-topic", r.color_topic, "Bag: colour image topic, paired by timestamp")->group(group);
+  cmd->add_option("--camera-info-topic", r.camera_info_topic, "Bag: CameraInfo topic of the depth camera")->group(group);
+  cmd->add_option("--pose-topic", r.pose_topic, "Bag: PoseStamped or Odometry topic (default: the TF tree)")->group(group);
+  cmd->add_option("--world-frame", r.world_frame, "Bag: TF frame of the poses (default odom, else map, else the root)")
+      ->group(group);
+  cmd->add_option("--start", r.start_s, "Bag: skip the first S seconds")->group(group);
+  cmd->add_option("--duration", r.duration_s, "Bag: read S seconds from the start")->group(group);
+  cmd->add_option("--every", r.every, "Bag: keep every N-th depth frame")->group(group);
+}
+}  // namespace
+
 void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required) {
-  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, dataset folder, TUM RGB-D sequence folder, or OpenNI2 recording (.oni)")
+  cmd->add_option("INPUT", opt.input, "Depth PNG (16-bit), organised PCD, dataset folder, TUM RGB-D sequence folder, OpenNI2 recording (.oni), or ROS bag (.bag, .mcap, .db3, rosbag2 folder)")
       ->required(input_required);
   cmd->add_option("--params", opt.params_file, "Parameter preset JSON (see resources/presets)");
   cmd->add_option("--set", opt.sets, "Override one parameter: KEY=VALUE (repeatable; see `params`)")
@@ -51,6 +68,7 @@ void add_read_options(CLI::App* cmd, InputOptions& opt) {
                   "TUM sequences: pair depth with colour and ground truth at most S seconds apart (default 0.02)");
   cmd->add_option("--world-up", opt.world_up,
                   "World-frame vector towards the roof X,Y,Z for posed frames (default: the dataset's, +Z)");
+  add_recording_options(cmd, opt.recording);
 }
 
 Parameters InputOptions::parameters() const {
@@ -88,7 +106,15 @@ ReadOptions InputOptions::read_options() const {
     r.world_up = u.normalized();
   }
   r.note = [](const std::string& line) { std::fprintf(stderr, "tunnelmap-cli: note: %s\n", line.c_str()); };
+  r.recording = recording;
   return r;
+}
+
+DatasetInput::DatasetInput(const InputOptions& in) {
+  if (recordings::is_recording_path(in.input))
+    recording_ = open_input(in.input, in.read_options());
+  else
+    dataset_ = read_dataset(in.input, in.read_options());
 }
 
 std::optional<Eigen::Vector3d> InputOptions::camera_up() const {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/io/dataset.h"
+#include "core/io/frame_source.h"
 #include "core/io/read_options.h"
 #include "core/params/parameters.h"
 #include "core/pipeline/pipeline.h"
@@ -20,6 +22,7 @@ struct InputOptions {
   std::string up;           // "X,Y,Z" camera frame
   std::optional<double> max_time_diff;  // TUM pairing limit in seconds (default 0.02)
   std::string world_up;     // "X,Y,Z" world frame, replaces a dataset's up
+  recordings::RecordingOptions recording;  // --depth-topic ... --every (robot recordings)
 
   // Parameters: defaults, then --params FILE, then each --set (ParameterError / InputError).
   Parameters parameters() const;
@@ -35,8 +38,21 @@ struct InputOptions {
 void add_input_options(CLI::App* cmd, InputOptions& opt, bool input_required = true);
 
 // Only the options that change how a sequence is read: --intrinsics, --depth-scale,
-// --max-time-diff, --world-up (for commands that read but run no pipeline, e.g. convert).
+// --max-time-diff, --world-up and the recording options (for commands that read but run no
+// pipeline, e.g. convert).
 void add_read_options(CLI::App* cmd, InputOptions& opt);
+
+// A dataset folder, a TUM sequence or a robot recording read as a Dataset (a recording is
+// extracted to a temporary dataset folder that lives as long as this object).
+class DatasetInput {
+ public:
+  explicit DatasetInput(const InputOptions& in);
+  const Dataset& dataset() const { return recording_ ? *recording_->dataset() : dataset_; }
+
+ private:
+  std::unique_ptr<FrameSource> recording_;
+  Dataset dataset_;
+};
 
 // Progress bar on stderr when it is a terminal (sequences only).
 class Progress {

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   cli::add_fuse_command(app, ctx);
   cli::add_map_command(app, ctx);
   cli::add_convert_command(app, ctx);
+  cli::add_topics_command(app, ctx);
   cli::add_evaluate_command(app, ctx);
   cli::add_devices_command(app, ctx);
   cli::add_record_command(app, ctx);

@@ -12,6 +12,8 @@
 #include "core/io/organized_pcd.h"
 #include "core/io/png_folder.h"
 #include "core/io/tum_sequence.h"
+#include "core/recordings/recording.h"
+#include "core/recordings/recording_dataset.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -98,6 +100,7 @@ std::unique_ptr<FrameSource> open_input(const std::string& input, const ReadOpti
   std::error_code ec;
   if (input.empty()) throw InputError("", "no input given");
   if (!fs::exists(input, ec)) throw InputError(input, ec ? "cannot access: " + ec.message() : "not found");
+  if (recordings::is_recording_path(input)) return recordings::open_recording_input(input, opt);
   if (is_tum_sequence(input)) return std::make_unique<DatasetSource>(read_dataset(input, opt));
   if (fs::is_directory(input, ec)) {
     // A plain folder of depth PNGs is a sequence without poses.

@@ -1,7 +1,8 @@
 #pragma once
 // One entry point for every input the CLI and GUI accept: a depth PNG, an organised PCD, a
-// dataset folder (or its dataset.json), a TUM RGB-D sequence (folder with depth.txt), or a plain
-// folder of depth PNGs (core/io/png_folder.h).
+// dataset folder (or its dataset.json), a TUM RGB-D sequence (folder with depth.txt), a plain
+// folder of depth PNGs (core/io/png_folder.h), or a robot recording (ROS 1 .bag, MCAP, rosbag2
+// sqlite3 or folder; core/recordings/recording_dataset.h).
 #include <cstddef>
 #include <functional>
 #include <memory>

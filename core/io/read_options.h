@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/frame/intrinsics.h"
+#include "core/recordings/recording_options.h"
 
 namespace tunnelmap {
 
@@ -19,6 +20,8 @@ struct ReadOptions {
   std::optional<Eigen::Vector3d> world_up;  // replaces a dataset's world up (unit) when set
   // One-line notes a reader wants the user to see (e.g. unmatched TUM frames); null = silent.
   std::function<void(const std::string&)> note;
+  // Robot recordings (ROS bags): topics, world frame and time window (core/recordings).
+  recordings::RecordingOptions recording;
 };
 
 // PrimeSense VGA intrinsics scaled to an image of the given size (used when none are given).

@@ -167,8 +167,114 @@ def tum_seeds():
     put("tum_list", "huge_translation.txt", "1 a\n%%\n1 1e300 0 0 0 0 0 1\n")
 
 
+# ------------------------------------------------------------------ ROS recordings
+def cdr_string(s):
+    b = s.encode() + b"\0"
+    return struct.pack("<I", len(b)) + b
+
+
+def cdr_image(w, h, encoding, data, step):
+    # header (stamp, frame_id), height, width, encoding, is_bigendian, step, data; CDR alignment
+    # matters only for the u32s after the strings, which cdr_align() pads.
+    body = struct.pack("<iI", 12, 500) + cdr_string("cam")
+    body = cdr_align(body, 4) + struct.pack("<II", h, w) + cdr_string(encoding)
+    body += b"\0"
+    body = cdr_align(body, 4) + struct.pack("<I", step)
+    body += struct.pack("<I", len(data)) + data
+    return b"\x00\x01\x00\x00" + body
+
+
+def cdr_align(body, n):
+    return body + b"\0" * ((-len(body)) % n)
+
+
+def cdr_tf(parent, child, xyz):
+    body = struct.pack("<I", 1) + struct.pack("<iI", 3, 7) + cdr_string(parent)
+    body = cdr_align(body, 4) + cdr_string(child)
+    body = cdr_align(body, 8) + struct.pack("<7d", *xyz, 0, 0, 0, 1)
+    return b"\x00\x01\x00\x00" + body
+
+
+def mcap_record(op, content):
+    return struct.pack("<BQ", op, len(content)) + content
+
+
+def mstr(s):
+    return struct.pack("<I", len(s)) + s.encode()
+
+
+def mcap_file(summary=True):
+    magic = b"\x89MCAP0\r\n"
+    out = magic + mcap_record(1, mstr("ros2") + mstr("seed"))
+    schema = mcap_record(3, struct.pack("<H", 1) + mstr("sensor_msgs/msg/Image") + mstr("ros2msg") + mstr(""))
+    channel = mcap_record(4, struct.pack("<HH", 1, 1) + mstr("/depth") + mstr("cdr") + struct.pack("<I", 0))
+    msg = cdr_image(2, 2, "16UC1", struct.pack("<4H", 1000, 0, 1500, 65535), 4)
+    records = schema + channel + mcap_record(5, struct.pack("<HIQQ", 1, 0, 10, 10) + msg)
+    chunk_offset = len(out)
+    out += mcap_record(6, struct.pack("<QQQI", 10, 10, len(records), 0) + mstr("") + struct.pack("<Q", len(records)) + records)
+    chunk_length = len(out) - chunk_offset
+    index_offset = len(out)
+    out += mcap_record(7, struct.pack("<HI", 1, 16) + struct.pack("<QQ", 10, len(schema) + len(channel)))
+    out += mcap_record(15, struct.pack("<I", 0))
+    summary_start = len(out) if summary else 0
+    if summary:
+        out += schema + channel
+        offsets = struct.pack("<HQ", 1, index_offset)
+        out += mcap_record(8, struct.pack("<QQQQ", 10, 10, chunk_offset, chunk_length) + struct.pack("<I", len(offsets))
+                           + offsets + struct.pack("<Q", index_offset - chunk_offset - chunk_length + 25) + mstr("")
+                           + struct.pack("<QQ", len(records), len(records)))
+    out += mcap_record(2, struct.pack("<QQI", summary_start, 0, 0)) + magic
+    return out
+
+
+def ros1_field(name, value):
+    f = name.encode() + b"=" + value
+    return struct.pack("<I", len(f)) + f
+
+
+def ros1_record(fields, data):
+    header = b"".join(ros1_field(k, v) for k, v in fields)
+    return struct.pack("<I", len(header)) + header + struct.pack("<I", len(data)) + data
+
+
+def ros1_bag():
+    conn_data = b"".join(ros1_field(k, v.encode()) for k, v in
+                         (("topic", "/tf"), ("type", "tf2_msgs/TFMessage"), ("md5sum", "94810edda583a504dfda3829e70d7eec"),
+                          ("message_definition", "")))
+    conn = ros1_record((("op", b"\x07"), ("conn", struct.pack("<I", 0)), ("topic", b"/tf")), conn_data)
+    tf = struct.pack("<I", 1) + struct.pack("<III", 0, 3, 7) + struct.pack("<I", 4) + b"odom"
+    tf += struct.pack("<I", 6) + b"camera" + struct.pack("<7d", 1, 2, 3, 0, 0, 0, 1)
+    msg = ros1_record((("op", b"\x02"), ("conn", struct.pack("<I", 0)), ("time", struct.pack("<II", 3, 7))), tf)
+    chunk_body = conn + msg
+    head_len = 4096
+    chunk_pos = 13 + head_len
+    chunk = ros1_record((("op", b"\x05"), ("compression", b"none"), ("size", struct.pack("<I", len(chunk_body)))), chunk_body)
+    index = ros1_record((("op", b"\x04"), ("ver", struct.pack("<I", 1)), ("conn", struct.pack("<I", 0)),
+                         ("count", struct.pack("<I", 1))), struct.pack("<IIi", 3, 7, len(conn)))
+    index_pos = chunk_pos + len(chunk) + len(index)
+    info = ros1_record((("op", b"\x06"), ("ver", struct.pack("<I", 1)), ("chunk_pos", struct.pack("<Q", chunk_pos)),
+                        ("start_time", struct.pack("<II", 3, 7)), ("end_time", struct.pack("<II", 3, 7)),
+                        ("count", struct.pack("<I", 1))), struct.pack("<II", 0, 1))
+    bag_header = ros1_record((("op", b"\x03"), ("index_pos", struct.pack("<Q", index_pos)),
+                              ("conn_count", struct.pack("<I", 1)), ("chunk_count", struct.pack("<I", 1))), b"")
+    bag_header = bag_header[:-4]  # the data block is padding up to 4096 bytes
+    pad = head_len - len(bag_header) - 4
+    bag_header += struct.pack("<I", pad) + b" " * pad
+    return b"#ROSBAG V2.0\n" + bag_header + chunk + index + conn + info
+
+
+def recording_seeds():
+    put("mcap_records", "indexed.mcap", mcap_file(True))
+    put("mcap_records", "no_summary.mcap", mcap_file(False))
+    put("ros1_records", "tf.bag", ros1_bag())
+    put("ros1_records", "cut.bag", ros1_bag()[:4500])
+    put("cdr_messages", "depth_16uc1.cdr", cdr_image(2, 2, "16UC1", struct.pack("<4H", 1000, 0, 1500, 65535), 4))
+    put("cdr_messages", "rgb8_short.cdr", cdr_image(640, 480, "rgb8", b"\1" * 30, 1920))
+    put("cdr_messages", "tf.cdr", cdr_tf("odom", "camera", (1.0, 2.0, 3.0)))
+
+
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--map-ply")
     a = ap.parse_args()
-    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds()
+    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds(); recording_seeds()

@@ -1,0 +1,165 @@
+#include "core/recordings/recording_dataset.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/io/dataset.h"
+#include "core/util/error.h"
+
+namespace tunnelmap::recordings {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr double kDatasetDepthScale = 1000.0;  // millimetres, as depth cameras deliver them
+
+std::string frame_name(std::size_t i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%06zu.png", i);
+  return buf;
+}
+
+json pose_json(const Eigen::Isometry3d& T) {
+  json a = json::array();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) a.push_back(T.matrix()(r, c));
+  return a;
+}
+
+// Depth in millimetres; no measurement (0, NaN, negative) stays 0.
+cv::Mat depth_mm(const DepthFrame& f, std::size_t& out_of_range) {
+  cv::Mat m(f.height, f.width, CV_16UC1);
+  const double to_mm = kDatasetDepthScale / f.depth_units_per_m;
+  for (int v = 0; v < f.height; ++v)
+    for (int u = 0; u < f.width; ++u) {
+      const double d = f.depth[static_cast<std::size_t>(v) * f.width + u] * to_mm;
+      std::uint16_t q = 0;
+      if (std::isfinite(d) && d > 0) {
+        const double r = std::round(d);
+        if (r > 65535.0) ++out_of_range;
+        else q = static_cast<std::uint16_t>(r);
+      }
+      m.at<std::uint16_t>(v, u) = q;
+    }
+  return m;
+}
+
+void write_png(const fs::path& path, const cv::Mat& m) {
+  if (!cv::imwrite(path.string(), m)) throw InputError(path.string(), "cannot write the image");
+}
+
+cv::Mat bgr_of(const DepthFrame& f) {
+  cv::Mat bgr(f.height, f.width, CV_8UC3);
+  for (int v = 0; v < f.height; ++v)
+    for (int u = 0; u < f.width; ++u) {
+      const std::uint8_t* p = &f.rgb[(static_cast<std::size_t>(v) * f.width + u) * 3];
+      bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(p[2], p[1], p[0]);
+    }
+  return bgr;
+}
+
+// A temporary dataset folder removed with the source that reads it.
+class ExtractedRecordingSource : public FrameSource {
+ public:
+  ExtractedRecordingSource(fs::path dir, Dataset ds) : dir_(std::move(dir)), ds_(std::move(ds)) {}
+  ~ExtractedRecordingSource() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  std::size_t size() const override { return ds_.frames.size(); }
+  DepthFrame load(std::size_t i) const override {
+    DepthFrame f = ds_.load_frame(i);
+    f.source = sources_.at(i);
+    return f;
+  }
+  std::string describe(std::size_t i) const override {
+    return "frame " + std::to_string(i) + "/" + std::to_string(ds_.frames.size()) + " (" + sources_.at(i) + ")";
+  }
+  const Dataset* dataset() const override { return &ds_; }
+  std::vector<std::string> sources_;  // "topic t=... s" per frame
+
+ private:
+  fs::path dir_;
+  Dataset ds_;
+};
+
+fs::path make_temp_folder() {
+  std::string pattern = (fs::temp_directory_path() / "tunnelmap-recording-XXXXXX").string();
+  if (!::mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder");
+  return pattern;
+}
+
+}  // namespace
+
+RecordingExport write_recording_dataset(const RecordingFrames& frames, const std::string& recording_path,
+                                        const fs::path& dir, const Eigen::Vector3d& up,
+                                        const std::function<void(std::size_t)>& progress) {
+  fs::create_directories(dir / "depth");
+  RecordingExport ex;
+  json list = json::array();
+  Intrinsics K;
+  frames.for_each_frame([&](DepthFrame& f) {
+    const std::string name = frame_name(ex.frames);
+    write_png(dir / "depth" / name, depth_mm(f, ex.depth_out_of_range));
+    json fj = {{"depth", "depth/" + name}, {"timestamp", f.timestamp_s}, {"source", f.source}};
+    if (f.has_rgb()) {
+      fs::create_directories(dir / "rgb");
+      write_png(dir / "rgb" / name, bgr_of(f));
+      fj["rgb"] = "rgb/" + name;
+      ++ex.coloured;
+    }
+    if (f.pose) {
+      fj["pose"] = pose_json(*f.pose);
+      ++ex.posed;
+    }
+    list.push_back(fj);
+    if (ex.frames == 0) K = f.intrinsics;
+    ++ex.frames;
+    if (progress) progress(ex.frames);
+    return true;
+  });
+  if (ex.frames == 0)
+    throw InputError(recording_path, "no depth frame on " + frames.topics().depth + " in the chosen time window");
+  const json dataset = {
+      {"format", kDatasetFormat},
+      {"intrinsics", {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width}, {"height", K.height}}},
+      {"depth_scale", kDatasetDepthScale},
+      {"up", {up.x(), up.y(), up.z()}},
+      {"frames", list},
+      {"recording",
+       {{"path", recording_path}, {"depth_topic", frames.topics().depth}, {"color_topic", frames.topics().color},
+        {"camera_info_topic", frames.topics().camera_info}, {"pose_topic", frames.topics().pose},
+        {"world_frame", frames.world_frame()}}}};
+  std::ofstream out(dir / "dataset.json");
+  out << dataset.dump(2) << "\n";
+  if (!out) throw InputError((dir / "dataset.json").string(), "cannot write");
+  return ex;
+}
+
+std::unique_ptr<FrameSource> open_recording_input(const std::string& path, const ReadOptions& opt) {
+  const std::unique_ptr<Recording> rec = open_recording(path);
+  const RecordingFrames frames(*rec, opt.recording, opt);
+  const fs::path dir = make_temp_folder();
+  try {
+    const Eigen::Vector3d up = opt.world_up ? opt.world_up->normalized() : Eigen::Vector3d::UnitZ();
+    const RecordingExport ex = write_recording_dataset(frames, path, dir, up);
+    if (opt.note && ex.depth_out_of_range)
+      opt.note(path + ": " + std::to_string(ex.depth_out_of_range) + " depth pixels beyond 65.535 m read as no measurement");
+    Dataset ds = read_dataset(dir.string());
+    auto source = std::make_unique<ExtractedRecordingSource>(dir, std::move(ds));
+    for (const auto& f : source->dataset()->frames) source->sources_.push_back(f.raw.value("source", path));
+    return source;
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    throw;
+  }
+}
+
+}  // namespace tunnelmap::recordings

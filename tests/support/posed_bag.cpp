@@ -1,0 +1,32 @@
+#include "tests/support/posed_bag.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "tests/support/cdr_writer.h"
+
+namespace tunnelmap::testing {
+
+std::int64_t bag_stamp_ns(const Dataset& ds, std::size_t i) {
+  return 1700000000LL * 1000000000LL + std::llround(ds.frames[i].timestamp_s * 1e9);
+}
+
+void write_posed_bag(const Dataset& ds, const BagMessageSink& write) {
+  for (std::size_t i = 0; i < ds.frames.size(); ++i) {
+    const DepthFrame f = ds.load_frame(i);
+    const std::int64_t t = bag_stamp_ns(ds, i);
+    const auto w = static_cast<std::uint32_t>(f.width), h = static_cast<std::uint32_t>(f.height);
+    std::vector<std::uint8_t> depth(static_cast<std::size_t>(w) * h * 4);
+    for (std::size_t k = 0; k < f.depth.size(); ++k) {
+      const float metres = f.depth[k] / static_cast<float>(f.depth_units_per_m);
+      std::memcpy(&depth[k * 4], &metres, 4);
+    }
+    write(kBagInfoTopic, "sensor_msgs/msg/CameraInfo", t,
+          cdr_camera_info(t, kBagCameraFrame, w, h, f.intrinsics.fx, f.intrinsics.fy, f.intrinsics.cx, f.intrinsics.cy));
+    write(kBagOdomTopic, "nav_msgs/msg/Odometry", t, cdr_odometry(t, "odom", kBagCameraFrame, *f.pose));
+    write(kBagDepthTopic, "sensor_msgs/msg/Image", t, cdr_image(t, kBagCameraFrame, w, h, "32FC1", w * 4, depth));
+    if (f.has_rgb()) write(kBagColorTopic, "sensor_msgs/msg/Image", t, cdr_image(t, "camera_color_optical_frame", w, h, "rgb8", w * 3, f.rgb));
+  }
+}
+
+}  // namespace tunnelmap::testing
