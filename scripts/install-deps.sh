@@ -12,7 +12,7 @@ PACKAGES=(
   libopenni2-dev openni2-utils
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev libtbb-dev libopenvdb-dev
   xvfb xauth
   dpkg-dev file help2man poppler-utils
   clang libclang-rt-14-dev

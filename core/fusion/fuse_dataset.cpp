@@ -13,6 +13,18 @@ namespace {
 double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
+// The world box of every frame's depth box (camera frame) through its pose.
+Eigen::AlignedBox3d posed_depth_box(const std::vector<Eigen::AlignedBox3d>& boxes,
+                                    const std::vector<Eigen::Isometry3d>& poses) {
+  Eigen::AlignedBox3d box;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (boxes[i].isEmpty()) continue;
+    for (int c = 0; c < 8; ++c)
+      box.extend(poses[i] * boxes[i].corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
+  }
+  return box;
+}
+
 }  // namespace
 
 FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const FuseSettings& s) {
@@ -22,8 +34,8 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   const int n = static_cast<int>(ds.frames.size());
   if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
 
-  // Pass 1: poses, per-frame detection and wall samples, each frame's depth box in its own
-  // camera frame (frames are not kept: memory stays flat).
+  // Pass 1: poses, per-frame detection and wall samples, for the dense volume each frame's
+  // depth box in its own camera frame (frames are not kept: memory stays flat).
   Pipeline pipeline(params);
   pipeline.set_world_up(ds.up);
   std::vector<Eigen::Isometry3d> poses;
@@ -52,7 +64,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
       maps[k].plane_outlier.clear();
       maps[k].plane_candidate_classes.clear();
     }
-    extend_depth_bounds(f, Eigen::Isometry3d::Identity(), fo, boxes[k]);
+    if (s.dense) extend_depth_bounds(f, Eigen::Isometry3d::Identity(), fo, boxes[k]);
     poses.push_back(*rp.pose);
     r.frames.push_back(std::move(ff));
     if (s.progress) s.progress("detect", i + 1, n);
@@ -72,23 +84,24 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   }
   r.timings_ms["map"] = ms_since(tm);
 
-  // Pass 2: integration with the final poses, in the box of every frame's depth through them.
+  // Pass 2: integration with the final poses.
   const auto t1 = std::chrono::steady_clock::now();
-  Eigen::AlignedBox3d box;
-  for (int i = 0; i < n; ++i) {
-    const Eigen::AlignedBox3d& b = boxes[static_cast<std::size_t>(i)];
-    if (b.isEmpty()) continue;
-    for (int c = 0; c < 8; ++c)
-      box.extend(poses[static_cast<std::size_t>(i)] * b.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)));
-  }
   TsdfOptions to = tsdf_options(fo);
   to.threads = s.threads;
-  r.volume = std::make_unique<TsdfVolume>(fusion_grid(box, fo), to);
+  if (s.dense)
+    r.dense_volume = std::make_unique<TsdfVolume>(fusion_grid(posed_depth_box(boxes, poses), fo), to);
+  else
+    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo));
   for (int i = 0; i < n; ++i) {
     const DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
-    r.volume->integrate(f, poses[static_cast<std::size_t>(i)]);
+    const Eigen::Isometry3d& pose = poses[static_cast<std::size_t>(i)];
+    if (r.dense_volume)
+      r.dense_volume->integrate(f, pose);
+    else
+      r.volume->integrate(f, pose);
     if (s.progress) s.progress("integrate", i + 1, n);
   }
+  if (r.volume && r.volume->block_count() == 0) throw no_depth_error(fo);
   r.timings_ms["integrate"] = ms_since(t1);
 
   std::vector<ScanInput> scans;
