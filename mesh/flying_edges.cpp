@@ -1,5 +1,6 @@
 #include "mesh/flying_edges.h"
 
+#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
@@ -65,16 +66,48 @@ void append_contour_vertex(vtkPolyData* poly, vtkIdType id, const Eigen::Vector3
   }
 }
 
-Eigen::Vector3i triangle_cell(vtkPolyData* poly, const vtkIdType* ids, const Eigen::Vector3d& origin,
-                              double spacing) {
+namespace {
+// The corner (lowest sample) of the cell holding the triangle (its centroid's cell).
+Eigen::Vector3i triangle_cell(vtkPolyData* poly, const vtkIdType* ids) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (int k = 0; k < 3; ++k) {
     double p[3];
     poly->GetPoint(ids[k], p);
     c += Eigen::Vector3d(p[0], p[1], p[2]) / 3.0;
   }
-  const Eigen::Vector3d cell = (c - origin) / spacing;
-  return {int(std::floor(cell.x())), int(std::floor(cell.y())), int(std::floor(cell.z()))};
+  return {int(std::floor(c.x())), int(std::floor(c.y())), int(std::floor(c.z()))};
+}
+}  // namespace
+
+void copy_kept_triangles(vtkPolyData* poly, const std::function<CellVerdict(const Eigen::Vector3i&)>& verdict,
+                         const Eigen::Vector3d& offset, double scale, TriangleMesh& mesh, MeshStats& stats,
+                         const std::function<void(vtkIdType)>& on_new_vertex) {
+  std::vector<std::int32_t> remap(static_cast<std::size_t>(poly->GetNumberOfPoints()), -1);
+  vtkCellArray* polys = poly->GetPolys();
+  polys->InitTraversal();
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  while (polys->GetNextCell(npts, ids)) {
+    if (npts != 3) continue;
+    const CellVerdict v = verdict(triangle_cell(poly, ids));
+    if (v == CellVerdict::Foreign) continue;
+    ++stats.raw_triangles;
+    if (v == CellVerdict::Unseen) {
+      ++stats.dropped_unseen;
+      continue;
+    }
+    std::array<std::int32_t, 3> tri;
+    for (int k = 0; k < 3; ++k) {
+      std::int32_t& m = remap[static_cast<std::size_t>(ids[k])];
+      if (m < 0) {
+        m = static_cast<std::int32_t>(mesh.vertices.size());
+        append_contour_vertex(poly, ids[k], offset, scale, mesh);
+        if (on_new_vertex) on_new_vertex(ids[k]);
+      }
+      tri[k] = m;
+    }
+    mesh.triangles.push_back(tri);
+  }
 }
 
 }  // namespace tunnelmap

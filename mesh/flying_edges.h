@@ -7,8 +7,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 
 #include "core/fusion/triangle_mesh.h"
+#include "mesh/tsdf_mesher.h"
 
 namespace tunnelmap {
 
@@ -24,8 +26,15 @@ vtkSmartPointer<vtkPolyData> zero_level_set(vtkImageData* image);
 void append_contour_vertex(vtkPolyData* poly, vtkIdType id, const Eigen::Vector3d& offset, double scale,
                            TriangleMesh& mesh);
 
-// The corner (lowest sample) of the cell holding the triangle, in the image's sample units.
-Eigen::Vector3i triangle_cell(vtkPolyData* poly, const vtkIdType* ids, const Eigen::Vector3d& origin,
-                              double spacing);
+// What becomes of a contour triangle, by the cell it lies in.
+enum class CellVerdict { Foreign, Unseen, Kept };  // another extraction's / dropped / kept
+
+// Copies the contour's triangles whose cell (corner in sample units of `poly`'s image, which
+// has its origin at 0 and spacing 1) `verdict` keeps into `mesh`, each vertex once, positions
+// mapped by `offset + scale * p`; `on_new_vertex(id)` runs for each vertex added. Counts the
+// kept and dropped ones in `stats` (foreign ones are not counted).
+void copy_kept_triangles(vtkPolyData* poly, const std::function<CellVerdict(const Eigen::Vector3i&)>& verdict,
+                         const Eigen::Vector3d& offset, double scale, TriangleMesh& mesh, MeshStats& stats,
+                         const std::function<void(vtkIdType)>& on_new_vertex = nullptr);
 
 }  // namespace tunnelmap

@@ -1,7 +1,6 @@
 #include "mesh/sparse_mesher.h"
 
 #include <tbb/parallel_for.h>
-#include <vtkCellArray.h>
 
 #include <chrono>
 #include <cmath>
@@ -122,38 +121,22 @@ MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& c
   const vtkSmartPointer<vtkPolyData> poly = zero_level_set(image);
 
   auto seen = [&](int x, int y, int z) { return s.weight[ChunkSamples::index(x, y, z)] >= min_weight; };
+  auto verdict = [&](const Eigen::Vector3i& c) {
+    if (c.minCoeff() < 1 || c.maxCoeff() > kChunkVoxels) return CellVerdict::Foreign;  // a neighbour's
+    for (int k = 0; k < 8; ++k)
+      if (!seen(c.x() + (k & 1), c.y() + ((k >> 1) & 1), c.z() + ((k >> 2) & 1))) return CellVerdict::Unseen;
+    return CellVerdict::Kept;
+  };
   MeshChunk out;
-  std::vector<std::int32_t> remap(static_cast<std::size_t>(poly->GetNumberOfPoints()), -1);
-  const Eigen::Vector3d offset = first.cast<double>() * volume.voxel_m();
-  vtkCellArray* polys = poly->GetPolys();
-  polys->InitTraversal();
-  vtkIdType npts = 0;
-  const vtkIdType* ids = nullptr;
-  while (polys->GetNextCell(npts, ids)) {
-    if (npts != 3) continue;
-    const Eigen::Vector3i c = triangle_cell(poly, ids, Eigen::Vector3d::Zero(), 1.0);
-    if (c.minCoeff() < 1 || c.maxCoeff() > kChunkVoxels) continue;  // a neighbour's cell
-    ++out.raw_triangles;
-    bool ok = true;
-    for (int k = 0; k < 8 && ok; ++k) ok = seen(c.x() + (k & 1), c.y() + ((k >> 1) & 1), c.z() + ((k >> 2) & 1));
-    if (!ok) {
-      ++out.dropped_unseen;
-      continue;
-    }
-    std::array<std::int32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) {
-      std::int32_t& m = remap[static_cast<std::size_t>(ids[k])];
-      if (m < 0) {
-        m = static_cast<std::int32_t>(out.mesh.vertices.size());
-        append_contour_vertex(poly, ids[k], offset, volume.voxel_m(), out.mesh);
-        double q[3];
-        poly->GetPoint(ids[k], q);
-        out.vertex_edges.push_back(edge_of(q, first));
-      }
-      tri[k] = m;
-    }
-    out.mesh.triangles.push_back(tri);
-  }
+  MeshStats st;
+  copy_kept_triangles(poly, verdict, first.cast<double>() * volume.voxel_m(), volume.voxel_m(), out.mesh, st,
+                      [&](vtkIdType id) {
+                        double q[3];
+                        poly->GetPoint(id, q);
+                        out.vertex_edges.push_back(edge_of(q, first));
+                      });
+  out.raw_triangles = st.raw_triangles;
+  out.dropped_unseen = st.dropped_unseen;
   return out;
 }
 

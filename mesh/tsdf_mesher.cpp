@@ -1,7 +1,5 @@
 #include "mesh/tsdf_mesher.h"
 
-#include <vtkCellArray.h>
-
 #include <chrono>
 
 #include "mesh/flying_edges.h"
@@ -11,8 +9,9 @@ namespace tunnelmap {
 TriangleMesh extract_mesh(const TsdfVolume& volume, int min_weight, MeshStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   const VoxelGrid& g = volume.grid();
+  // Spacing 1 from the origin 0: sample units, so that cells are integer corners.
   const vtkSmartPointer<vtkImageData> image =
-      wrap_tsdf_image(g.dims, g.origin, g.voxel_m, volume.tsdf().data(), volume.rgb().data());
+      wrap_tsdf_image(g.dims, Eigen::Vector3d::Zero(), 1.0, volume.tsdf().data(), volume.rgb().data());
   const vtkSmartPointer<vtkPolyData> poly = zero_level_set(image);
 
   const std::vector<std::uint16_t>& w = volume.weight();
@@ -20,35 +19,14 @@ TriangleMesh extract_mesh(const TsdfVolume& volume, int min_weight, MeshStats* s
     return x >= 0 && y >= 0 && z >= 0 && x < g.dims.x() && y < g.dims.y() && z < g.dims.z() &&
            w[g.index(x, y, z)] >= min_weight;
   };
-
+  auto verdict = [&](const Eigen::Vector3i& c) {
+    for (int k = 0; k < 8; ++k)
+      if (!seen(c.x() + (k & 1), c.y() + ((k >> 1) & 1), c.z() + ((k >> 2) & 1))) return CellVerdict::Unseen;
+    return CellVerdict::Kept;
+  };
   TriangleMesh mesh;
-  std::vector<std::int32_t> remap(static_cast<std::size_t>(poly->GetNumberOfPoints()), -1);
   MeshStats st;
-  vtkCellArray* polys = poly->GetPolys();
-  polys->InitTraversal();
-  vtkIdType npts = 0;
-  const vtkIdType* ids = nullptr;
-  while (polys->GetNextCell(npts, ids)) {
-    if (npts != 3) continue;
-    ++st.raw_triangles;
-    const Eigen::Vector3i c = triangle_cell(poly, ids, g.origin, g.voxel_m);
-    bool ok = true;
-    for (int k = 0; k < 8 && ok; ++k) ok = seen(c.x() + (k & 1), c.y() + ((k >> 1) & 1), c.z() + ((k >> 2) & 1));
-    if (!ok) {
-      ++st.dropped_unseen;
-      continue;
-    }
-    std::array<std::int32_t, 3> tri;
-    for (int k = 0; k < 3; ++k) {
-      std::int32_t& m = remap[static_cast<std::size_t>(ids[k])];
-      if (m < 0) {
-        m = static_cast<std::int32_t>(mesh.vertices.size());
-        append_contour_vertex(poly, ids[k], Eigen::Vector3d::Zero(), 1.0, mesh);
-      }
-      tri[k] = m;
-    }
-    mesh.triangles.push_back(tri);
-  }
+  copy_kept_triangles(poly, verdict, g.origin, g.voxel_m, mesh, st);
   st.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats) *stats = st;

@@ -18,32 +18,15 @@
 #include "core/sim/sim_dataset_writer.h"
 #include "mesh/sparse_mesher.h"
 #include "mesh/tsdf_mesher.h"
+#include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
+using tunnelmap::testing::flat_wall;
 
 namespace {
 
-// A fronto-parallel wall at depth `z` (camera = world), uniform colour (200, 100, 50).
-DepthFrame wall_frame(double z) {
-  DepthFrame f;
-  f.intrinsics = Intrinsics::primesense_vga();
-  f.intrinsics.fx = f.intrinsics.fy = 570.3 / 4;
-  f.intrinsics.cx = 79.5;
-  f.intrinsics.cy = 59.5;
-  f.width = f.intrinsics.width = 160;
-  f.height = f.intrinsics.height = 120;
-  f.depth_units_per_m = 1000.0;
-  f.depth.assign(160 * 120, float(z * 1000.0));
-  f.rgb.assign(160 * 120 * 3, 0);
-  for (std::size_t i = 0; i < f.rgb.size(); i += 3) {
-    f.rgb[i] = 200;
-    f.rgb[i + 1] = 100;
-    f.rgb[i + 2] = 50;
-  }
-  return f;
-}
 
 TsdfOptions options_10mm(const FusionOptions& o) {
   TsdfOptions t = tsdf_options(o);
@@ -90,7 +73,7 @@ std::unique_ptr<Dataset> SparseWalk::walk;
 }  // namespace
 
 TEST(SparseTsdf, FlatWallAllocatesOnlyTheBandAndMeshesLikeTheDenseVolume) {
-  const DepthFrame f = wall_frame(1.0);
+  const DepthFrame f = flat_wall(1.0);
   Parameters p;
   p.set("fusion.voxel_mm", 10.0);
   const FusionOptions o = fusion_options(p);
@@ -132,7 +115,7 @@ TEST(SparseTsdf, RefusesDataBeyondTheSafetyExtent) {
   SparseVolumeLimits limits;
   limits.max_extent_m = 0.5;
   SparseTsdfVolume v(0.01, t, limits);
-  DepthFrame f = wall_frame(1.0);
+  DepthFrame f = flat_wall(1.0);
   EXPECT_THROW(v.integrate(f, Eigen::Isometry3d::Identity()), ParameterError);  // 1.1 m wide
   EXPECT_THROW(SparseTsdfVolume(0.0, t), ParameterError);
 }
