@@ -1,6 +1,7 @@
 #include "core/fusion/fuse_dataset.h"
 
 #include <chrono>
+#include <cmath>
 
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/posed_sequence.h"
@@ -25,6 +26,20 @@ Eigen::AlignedBox3d posed_depth_box(const std::vector<Eigen::AlignedBox3d>& boxe
   return box;
 }
 
+
+// The sparse lattice turned about the vertical to the tunnel's heading, so that the walls lie
+// along lattice planes (a wall at 45 deg to the lattice crosses ~40 % more blocks and lattice
+// edges). Within 1 deg of a world axis, or without a map, the world's axes: a sagging arm's
+// slightly tilted map then does not turn the lattice against the true walls.
+Eigen::Matrix3d heading_lattice(const TunnelMap& map, const Eigen::Vector3d& world_up) {
+  const Eigen::Vector3d up = world_up.normalized();
+  if (!map.detected || std::abs(up.z()) < 0.999) return Eigen::Matrix3d::Identity();
+  const double heading = std::atan2(map.axis_dir.y(), map.axis_dir.x());
+  const double quarter = M_PI / 2;
+  const double off_axis = heading - quarter * std::round(heading / quarter);
+  if (std::abs(off_axis) < M_PI / 180.0) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(off_axis, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
 }  // namespace
 
 FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const FuseSettings& s) {
@@ -82,6 +97,14 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     poses = ms.poses;
     groups = ms.groups;
   }
+  std::vector<ScanInput> scans;
+  for (std::size_t i = 0; i < r.frames.size(); ++i) {
+    r.frames[i].pose_group = groups[i];
+    r.frames[i].camera_to_world = poses[i];
+    r.frames[i].map = std::move(maps[i]);
+    scans.push_back({r.frames[i].map, r.frames[i].camera_to_world, r.frames[i].index});
+  }
+  if (s.detect) r.merged = merge_scans(scans, groups, tunnel_options(params).zone_cluster_m);
   r.timings_ms["map"] = ms_since(tm);
 
   // Pass 2: integration with the final poses.
@@ -91,7 +114,8 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   if (s.dense)
     r.dense_volume = std::make_unique<TsdfVolume>(fusion_grid(posed_depth_box(boxes, poses), fo), to);
   else
-    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo));
+    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo),
+                                                  heading_lattice(r.merged.map, ds.up));
   for (int i = 0; i < n; ++i) {
     const DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
     const Eigen::Isometry3d& pose = poses[static_cast<std::size_t>(i)];
@@ -104,14 +128,6 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   if (r.volume && r.volume->block_count() == 0) throw no_depth_error(fo);
   r.timings_ms["integrate"] = ms_since(t1);
 
-  std::vector<ScanInput> scans;
-  for (std::size_t i = 0; i < r.frames.size(); ++i) {
-    r.frames[i].pose_group = groups[i];
-    r.frames[i].camera_to_world = poses[i];
-    r.frames[i].map = std::move(maps[i]);
-    scans.push_back({r.frames[i].map, r.frames[i].camera_to_world, r.frames[i].index});
-  }
-  if (s.detect) r.merged = merge_scans(scans, groups, tunnel_options(params).zone_cluster_m);
   r.timings_ms["total"] = ms_since(t0);
   return r;
 }

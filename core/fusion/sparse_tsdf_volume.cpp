@@ -22,8 +22,8 @@ int thread_count(int requested) {
 }  // namespace
 
 SparseTsdfVolume::SparseTsdfVolume(double voxel_m, const TsdfOptions& options,
-                                   const SparseVolumeLimits& limits)
-    : voxel_m_(voxel_m), options_(options), limits_(limits) {
+                                   const SparseVolumeLimits& limits, const Eigen::Matrix3d& lattice_to_world)
+    : voxel_m_(voxel_m), options_(options), limits_(limits), lattice_to_world_(lattice_to_world) {
   if (!(voxel_m > 0)) throw ParameterError("fusion: the voxel size must be positive");
   const int threads = thread_count(options.threads);
   if (threads > 1) arena_ = std::make_unique<tbb::task_arena>(threads);
@@ -78,9 +78,9 @@ VoxelBlock& SparseTsdfVolume::block_at(const Eigen::Vector3i& coords) {
 }
 
 // Every block of the frame's truncation band, once each, into touched_.
-void SparseTsdfVolume::allocate_band(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_world) {
+void SparseTsdfVolume::allocate_band(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_lattice) {
   touched_.clear();
-  for_each_band_block(FrameProjection(frame, options_), camera_to_world, float(block_m()),
+  for_each_band_block(FrameProjection(frame, options_), camera_to_lattice, float(block_m()),
                       [&](const Eigen::Vector3i& key) {
                         VoxelBlock& b = block_at(key);
                         if (b.touched_frame == frames_) return;
@@ -92,13 +92,13 @@ void SparseTsdfVolume::allocate_band(const DepthFrame& frame, const Eigen::Isome
 // Allocated blocks the frame sees without its band passing them: their voxels get the frame's
 // free-space observations, as every voxel of the dense volume does (otherwise a surface that
 // one frame put there and later frames see through would never be carved away).
-void SparseTsdfVolume::add_visible_blocks(const FrameProjection& fp, const Eigen::Isometry3d& world_to_cam) {
+void SparseTsdfVolume::add_visible_blocks(const FrameProjection& fp, const Eigen::Isometry3d& lattice_to_cam) {
   const double half = 0.5 * block_m();
   const double radius = half * std::sqrt(3.0);
   for (const auto& block : blocks_) {
     VoxelBlock& b = *block;
     if (b.touched_frame == frames_) continue;
-    const Eigen::Vector3d c = world_to_cam * ((b.coords.cast<double>().array() + 0.5).matrix() * block_m() -
+    const Eigen::Vector3d c = lattice_to_cam * ((b.coords.cast<double>().array() + 0.5).matrix() * block_m() -
                                                 Eigen::Vector3d::Constant(0.5 * voxel_m_));
     if (c.z() + radius < fp.dmin || c.z() - radius > fp.dmax) continue;
     const double z = std::max(c.z() - radius, double(fp.dmin));
@@ -111,11 +111,11 @@ void SparseTsdfVolume::add_visible_blocks(const FrameProjection& fp, const Eigen
 }
 
 void SparseTsdfVolume::integrate_block(VoxelBlock& b, const FrameProjection& fp,
-                                       const Eigen::Isometry3d& world_to_cam) const {
-  const Eigen::Matrix3f R = world_to_cam.linear().cast<float>();
+                                       const Eigen::Isometry3d& lattice_to_cam) const {
+  const Eigen::Matrix3f R = lattice_to_cam.linear().cast<float>();
   const float step = float(voxel_m_);
   const Eigen::Vector3f sx = R.col(0) * step, sy = R.col(1) * step, sz = R.col(2) * step;
-  const Eigen::Vector3f first = (world_to_cam * (b.coords.cast<double>() * kBlockSide * voxel_m_)).cast<float>();
+  const Eigen::Vector3f first = (lattice_to_cam * (b.coords.cast<double>() * kBlockSide * voxel_m_)).cast<float>();
   int idx = 0;
   for (int z = 0; z < kBlockSide; ++z)
     for (int y = 0; y < kBlockSide; ++y) {
@@ -127,12 +127,15 @@ void SparseTsdfVolume::integrate_block(VoxelBlock& b, const FrameProjection& fp,
 
 void SparseTsdfVolume::integrate(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_world) {
   if (frame.empty()) return;
-  allocate_band(frame, camera_to_world);
+  Eigen::Isometry3d camera_to_lattice = Eigen::Isometry3d::Identity();
+  camera_to_lattice.linear() = lattice_to_world_.transpose() * camera_to_world.linear();
+  camera_to_lattice.translation() = lattice_to_world_.transpose() * camera_to_world.translation();
+  allocate_band(frame, camera_to_lattice);
   const FrameProjection fp(frame, options_);
-  const Eigen::Isometry3d world_to_cam = camera_to_world.inverse();
-  add_visible_blocks(fp, world_to_cam);
+  const Eigen::Isometry3d lattice_to_cam = camera_to_lattice.inverse();
+  add_visible_blocks(fp, lattice_to_cam);
   auto run = [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) integrate_block(*touched_[i], fp, world_to_cam);
+    for (std::size_t i = r.begin(); i != r.end(); ++i) integrate_block(*touched_[i], fp, lattice_to_cam);
   };
   const tbb::blocked_range<std::size_t> all(0, touched_.size(), 16);
   if (arena_)

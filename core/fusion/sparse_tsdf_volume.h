@@ -1,8 +1,10 @@
 #pragma once
 // SparseTsdfVolume: the TSDF in blocks of 8 x 8 x 8 voxels, allocated only where some frame's
 // truncation band passed (voxel hashing, Niessner et al. 2013), so that memory and time follow
-// the observed surface instead of the bounding box. Voxel (i, j, k) of the world-aligned
-// lattice has its centre at voxel_m * (i, j, k). Each frame allocates the blocks along every valid
+// the observed surface instead of the bounding box. Voxel (i, j, k) of the lattice has its
+// centre at voxel_m * (i, j, k) in the lattice frame: the world frame turned by
+// `lattice_to_world` (fusion turns it with the girder's heading, so that walls lie along
+// lattice planes and a girder running diagonally in the world costs the same; docs/fusion.md). Each frame allocates the blocks along every valid
 // pixel's truncation band, then updates only those blocks' voxels, with the same per-voxel rule
 // as the dense TsdfVolume (core/fusion/tsdf_update.h). Why blocks in a hash map and not
 // OpenVDB: docs/fusion.md.
@@ -50,7 +52,8 @@ class SparseTsdfVolume {
  public:
   // Throws ParameterError when voxel_m is not positive.
   SparseTsdfVolume(double voxel_m, const TsdfOptions& options,
-                   const SparseVolumeLimits& limits = SparseVolumeLimits());
+                   const SparseVolumeLimits& limits = SparseVolumeLimits(),
+                   const Eigen::Matrix3d& lattice_to_world = Eigen::Matrix3d::Identity());
 
   // Fuses one depth frame (and its registered colour, if any) seen from `camera_to_world`.
   // Throws ParameterError when the new blocks break a limit (the volume is then unchanged
@@ -60,6 +63,7 @@ class SparseTsdfVolume {
   double voxel_m() const { return voxel_m_; }
   double block_m() const { return voxel_m_ * kBlockSide; }
   const TsdfOptions& options() const { return options_; }
+  const Eigen::Matrix3d& lattice_to_world() const { return lattice_to_world_; }
   int frames_integrated() const { return frames_; }
 
   std::size_t block_count() const { return blocks_.size(); }
@@ -74,13 +78,14 @@ class SparseTsdfVolume {
 
  private:
   VoxelBlock& block_at(const Eigen::Vector3i& coords);  // allocates when new
-  void allocate_band(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_world);
-  void add_visible_blocks(const FrameProjection& fp, const Eigen::Isometry3d& world_to_cam);
-  void integrate_block(VoxelBlock& b, const FrameProjection& fp, const Eigen::Isometry3d& world_to_cam) const;
+  void allocate_band(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_lattice);
+  void add_visible_blocks(const FrameProjection& fp, const Eigen::Isometry3d& lattice_to_cam);
+  void integrate_block(VoxelBlock& b, const FrameProjection& fp, const Eigen::Isometry3d& lattice_to_cam) const;
 
   double voxel_m_;
   TsdfOptions options_;
   SparseVolumeLimits limits_;
+  Eigen::Matrix3d lattice_to_world_;
   std::vector<std::unique_ptr<VoxelBlock>> blocks_;
   std::unordered_map<Eigen::Vector3i, std::int32_t, BlockCoordsHash> index_;
   Eigen::AlignedBox3i block_box_;  // of the allocated blocks

@@ -133,6 +133,11 @@ TEST_F(SparseWalk, MemoryIsTheSameWhenTheGirderLiesDiagonally) {
   s.refine_poses = false;  // exact poses: the two runs fuse the same frames at the same poses
   const FusionResult along = fuse_dataset(*walk, p, s);
   const FusionResult diagonal = fuse_dataset(read_dataset(dir->file("diagonal")), p, s);
+  // The lattice turned with the girder's heading (to a multiple of 90 deg from it).
+  EXPECT_TRUE(along.volume->lattice_to_world().isIdentity(0.0));
+  const Eigen::Vector3d lattice_x = diagonal.volume->lattice_to_world().col(0);
+  const Eigen::Vector3d heading = turn.linear().col(0);
+  EXPECT_GT(std::max(std::abs(lattice_x.dot(heading)), lattice_x.cross(heading).norm()), 0.999);
   const double ratio = double(diagonal.volume->memory_bytes()) / double(along.volume->memory_bytes());
 
   // For comparison: the dense box.
