@@ -2,6 +2,7 @@
 // Coloured triangle mesh of a TsdfVolume's zero level set (VTK vtkFlyingEdges3D, which
 // interpolates the voxel colours onto the vertices and gives gradient normals).
 #include "core/fusion/triangle_mesh.h"
+#include "core/fusion/sparse_tsdf_volume.h"
 #include "core/fusion/tsdf_volume.h"
 
 namespace tunnelmap {
@@ -16,5 +17,8 @@ struct MeshStats {
 // the +1 of never-seen voxels next to the -1 behind a surface would otherwise make a false
 // second surface one truncation distance behind every real one. Normals point to free space.
 TriangleMesh extract_mesh(const TsdfVolume& volume, int min_weight, MeshStats* stats = nullptr);
+// The same for the sparse volume, chunk by chunk (mesh/sparse_mesher.h): the same vertices up to
+// the lattice's offset, merged where chunks meet.
+TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshStats* stats = nullptr);
 
 }  // namespace tunnelmap

@@ -12,7 +12,7 @@ PACKAGES=(
   libopenni2-dev openni2-utils
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev libtbb-dev libopenvdb-dev
   libsqlite3-dev libzstd-dev liblz4-dev libbz2-dev
   librosbag-storage-dev pluginlib-dev librcpputils-dev librcutils-dev libament-index-cpp-dev libtinyxml2-dev
   xvfb xauth

@@ -1,6 +1,8 @@
-// `tunnelmap-cli fuse DATASET [--mesh OUT.ply] [--map OUT.ply] [--json FILE]`: fuses every
-// posed frame (explicit pose, else forward kinematics of the arm's joints) into a TSDF volume,
-// extracts a coloured mesh and merges the per-frame tunnel maps along the tunnel axis.
+// `tunnelmap-cli fuse DATASET [--mesh OUT.ply] [--map OUT.ply] [--json FILE]
+// [--mesh-per-compartment DIR [--piece-length M]] [--dense]`: fuses every posed frame (explicit
+// pose, else forward kinematics of the arm's joints) into a sparse TSDF volume, extracts a
+// coloured mesh (whole, or in pieces along the tunnel) and merges the per-frame tunnel maps
+// along the tunnel axis.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -12,12 +14,14 @@
 #include "core/fusion/fuse_dataset.h"
 #include "core/fusion/fusion_options.h"
 #include "core/fusion/mesh_accuracy.h"
+#include "core/fusion/mesh_pieces_writer.h"
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
 #include "core/kinematics/robot_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "mesh/sparse_mesher.h"
 #include "mesh/tsdf_mesher.h"
 
 namespace tunnelmap::cli {
@@ -26,7 +30,9 @@ namespace {
 
 struct FuseOptions {
   InputOptions in;
-  std::string mesh_path, map_path, json_path, refined_dataset;
+  std::string mesh_path, map_path, json_path, refined_dataset, pieces_dir;
+  double piece_length_m = 0.0;  // 0: cut at the dataset's diaphragms
+  bool dense = false;
   bool prefer_joints = false;
   bool no_pose_refinement = false;
   bool quiet = false;
@@ -64,10 +70,73 @@ void check_new_folder(const std::string& dir) {
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) &&
       !(std::filesystem::is_directory(dir, ec) && std::filesystem::is_empty(dir, ec)))
-    throw InputError(dir, "the refined dataset's folder must be new or empty");
+    throw InputError(dir, "the output folder must be new or empty");
   const std::filesystem::path parent = std::filesystem::absolute(dir).parent_path();
   if (!std::filesystem::is_directory(parent, ec))
     throw InputError(dir, "its parent folder does not exist");
+}
+
+// The dataset's diaphragm stations along world x (simulated girders carry them).
+std::vector<double> known_diaphragms(const Dataset& ds) {
+  std::vector<double> x;
+  if (ds.ground_truth.is_object() && ds.ground_truth.contains("diaphragms_x_m") &&
+      ds.ground_truth["diaphragms_x_m"].is_array())
+    for (const auto& v : ds.ground_truth["diaphragms_x_m"])
+      if (v.is_number()) x.push_back(v.get<double>());
+  return x;
+}
+
+// The pieces of --mesh-per-compartment: at the diaphragms along world x, or every
+// --piece-length metres along the merged map's axis (else the mesh's principal axis).
+void write_pieces(const FuseOptions& o, const Dataset& ds, const FusionResult& r, const TriangleMesh& mesh,
+                  const nlohmann::json& header) {
+  PieceIndexInfo info;
+  info.header = header;
+  if (o.piece_length_m > 0) {
+    if (r.merged.map.detected)
+      info.axis = {r.merged.map.axis_point, r.merged.map.axis_dir.normalized()};
+    else
+      info.axis = principal_axis(mesh);
+    info.cut_by = "length";
+    info.piece_length_m = o.piece_length_m;
+    info.cuts_m = regular_cuts(mesh, info.axis, o.piece_length_m);
+  } else {
+    info.axis = StationAxis();  // the simulator's girder runs along world x
+    info.cut_by = "diaphragms";
+    info.cuts_m = known_diaphragms(ds);
+  }
+  write_mesh_pieces(o.pieces_dir, split_mesh(mesh, info.axis, info.cuts_m), info, header["params"]);
+}
+
+// {"kind", "blocks", "voxels", "bytes", "voxel_m"}, and the dense box's origin and dims.
+nlohmann::json volume_json(const FusionResult& r) {
+  if (r.volume)
+    return {{"kind", "sparse"},
+            {"blocks", r.volume->block_count()},
+            {"voxels", r.volume->voxel_count()},
+            {"bytes", r.volume->memory_bytes()},
+            {"voxel_m", r.volume->voxel_m()}};
+  const VoxelGrid& g = r.dense_volume->grid();
+  return {{"kind", "dense"},
+          {"blocks", nullptr},
+          {"voxels", g.count()},
+          {"bytes", r.dense_volume->memory_bytes()},
+          {"voxel_m", g.voxel_m},
+          {"origin", vec(g.origin)},
+          {"dims", {g.dims.x(), g.dims.y(), g.dims.z()}}};
+}
+
+std::string volume_summary(const FusionResult& r) {
+  char text[160];
+  if (r.volume)
+    std::snprintf(text, sizeof text, "%zu blocks (%zu voxels of %g mm, %zu MiB)", r.volume->block_count(),
+                  r.volume->voxel_count(), r.volume->voxel_m() * 1000.0, r.volume->memory_bytes() >> 20);
+  else {
+    const VoxelGrid& g = r.dense_volume->grid();
+    std::snprintf(text, sizeof text, "%dx%dx%d voxels of %g mm (dense, %zu MiB)", g.dims.x(), g.dims.y(),
+                  g.dims.z(), g.voxel_m * 1000.0, r.dense_volume->memory_bytes() >> 20);
+  }
+  return text;
 }
 
 void run(const FuseOptions& o, CliContext& ctx) {
@@ -77,17 +146,26 @@ void run(const FuseOptions& o, CliContext& ctx) {
   for (const std::string& p : {o.mesh_path, o.map_path, o.json_path})
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
   if (!o.refined_dataset.empty()) check_new_folder(o.refined_dataset);
+  if (!o.pieces_dir.empty()) {
+    check_new_folder(o.pieces_dir);
+    if (!(o.piece_length_m > 0) && known_diaphragms(ds).empty())
+      throw ParameterError("fuse: " + o.in.input + " knows no diaphragms: give --piece-length M with "
+                           "--mesh-per-compartment");
+  }
 
   FuseSettings s;
   s.prefer_joints = o.prefer_joints;
   s.refine_poses = !o.no_pose_refinement;
+  s.dense = o.dense;
   Progress progress(ds.frames.size() * 2);
   s.progress = [&](const std::string& stage, int done, int) {
     progress.step(static_cast<std::size_t>(done) + (stage == "integrate" ? ds.frames.size() : 0));
   };
   FusionResult r = fuse_dataset(ds, params, s);
   MeshStats ms;
-  const TriangleMesh mesh = extract_mesh(*r.volume, fusion_options(params).min_weight, &ms);
+  const int min_weight = fusion_options(params).min_weight;
+  const TriangleMesh mesh =
+      r.volume ? extract_mesh(*r.volume, min_weight, &ms) : extract_mesh(*r.dense_volume, min_weight, &ms);
   r.timings_ms["mesh"] = ms.milliseconds;
 
   const nlohmann::json pj = params.to_json();
@@ -114,13 +192,13 @@ void run(const FuseOptions& o, CliContext& ctx) {
     for (const FusedFrame& f : r.frames) refined.push_back(f.camera_to_world);
     write_dataset_with_poses(ds, refined, o.refined_dataset);
   }
-  const VoxelGrid& g = r.volume->grid();
+  const nlohmann::json header = {
+      {"tool", std::string("tunnelmap ") + TUNNELMAP_VERSION}, {"input", o.in.input}, {"params", pj}};
+  if (!o.pieces_dir.empty()) write_pieces(o, ds, r, mesh, header);
   const TunnelMap& m = r.merged.map;
   if (!o.quiet) {
-    std::cout << "fused " << r.frames.size() << " frames into " << g.dims.x() << "x" << g.dims.y()
-              << "x" << g.dims.z() << " voxels of " << g.voxel_m * 1000.0 << " mm ("
-              << r.volume->memory_bytes() / (1 << 20) << " MiB): " << mesh.vertices.size()
-              << " vertices, " << mesh.triangles.size() << " triangles\n";
+    std::cout << "fused " << r.frames.size() << " frames into " << volume_summary(r) << ": "
+              << mesh.vertices.size() << " vertices, " << mesh.triangles.size() << " triangles\n";
     if (m.detected)
       std::printf("map: %.3f x %.3f m over %.2f m of tunnel, %d frames merged\n", m.width_m,
                   m.height_m, m.extent_max_m - m.extent_min_m, r.merged.frames_merged);
@@ -175,15 +253,9 @@ void run(const FuseOptions& o, CliContext& ctx) {
                        {"refinement", refinement_json(correction_of(r.refinement, p.group))}});
     nlohmann::json sections = nlohmann::json::array();  // as in `map --json`
     for (const Section& sec : r.stations.sections) sections.push_back(section_json(sec, r.stations.options));
-    nlohmann::json doc = {
-        {"tool", std::string("tunnelmap ") + TUNNELMAP_VERSION},
-        {"input", o.in.input},
-        {"params", pj},
-        {"volume",
-         {{"origin", vec(g.origin)},
-          {"voxel_m", g.voxel_m},
-          {"dims", {g.dims.x(), g.dims.y(), g.dims.z()}},
-          {"memory_bytes", r.volume->memory_bytes()}}},
+    nlohmann::json doc = header;
+    doc.update({
+        {"volume", volume_json(r)},
         {"mesh",
          {{"vertices", mesh.vertices.size()},
           {"triangles", mesh.triangles.size()},
@@ -218,7 +290,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
                                         {"aligned_p95_m", aligned.p95_m},
                                         {"alignment", isometry_to_json(to_truth)}}},
         {"frames", frames},
-        {"timings_ms", r.timings_ms}};
+        {"timings_ms", r.timings_ms}});
     write_file_atomically(o.json_path, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
   }
   ctx.exit_code = 0;
@@ -242,6 +314,16 @@ void add_fuse_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--refined-dataset", opt->refined_dataset,
                   "Write the dataset with the refined poses to this new folder (other commands "
                   "read it like any dataset)");
+  cmd->add_option("--mesh-per-compartment", opt->pieces_dir,
+                  "Write the mesh in pieces to this new folder: one binary PLY per compartment "
+                  "(between the dataset's diaphragms) and pieces.json with their extents");
+  cmd->add_option("--piece-length", opt->piece_length_m,
+                  "With --mesh-per-compartment: pieces of this many metres along the tunnel "
+                  "instead (needed when no diaphragms are known)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--dense", opt->dense,
+                "Fuse into the dense volume over the data's bounding box (for comparison; memory "
+                "grows with the box)");
   cmd->add_flag("--quiet", opt->quiet, "Print nothing on success");
   cmd->callback([opt, &ctx] { run(*opt, ctx); });
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Fuses a posed dataset: resolves every frame's camera pose (explicit pose, else forward
 // kinematics of its joints), runs the per-frame tunnel detection (with the sequence context),
-// integrates all frames into one TSDF volume and merges the per-frame maps in the world frame.
+// integrates all frames into one sparse TSDF volume (or, on request, the dense one over the
+// data's bounding box, kept for comparison) and merges the per-frame maps in the world frame.
 // Mesh extraction needs VTK and lives in mesh/ (extract_mesh), outside the core.
 #include <functional>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/pose_refinement.h"
 #include "core/mapping/station_map.h"
+#include "core/fusion/sparse_tsdf_volume.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/params/parameters.h"
 #include "core/util/stage_timer.h"
@@ -32,11 +34,13 @@ struct FuseSettings {
   bool detect = true;          // per-frame tunnel detection + merged map
   bool refine_poses = true;    // correct each pose group against the map (needs detect)
   int threads = 0;             // TSDF integration threads (0 = all cores, at most 8)
+  bool dense = false;          // the dense volume over the data's box instead of the sparse one
   std::function<void(const std::string& stage, int done, int total)> progress;
 };
 
 struct FusionResult {
-  std::unique_ptr<TsdfVolume> volume;
+  std::unique_ptr<SparseTsdfVolume> volume;      // null when settings.dense
+  std::unique_ptr<TsdfVolume> dense_volume;      // only when settings.dense
   std::vector<FusedFrame> frames;
   MultiScanMap merged;
   StationMap stations;  // the map along the tunnel: sections that change (`fuse --map`)

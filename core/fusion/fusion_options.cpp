@@ -45,6 +45,12 @@ TsdfOptions tsdf_options(const FusionOptions& o) {
   return t;
 }
 
+SparseVolumeLimits sparse_volume_limits(const FusionOptions& o) {
+  SparseVolumeLimits l;
+  l.max_extent_m = o.max_extent_m;
+  return l;
+}
+
 void extend_depth_bounds(const DepthFrame& f, const Eigen::Isometry3d& T, const FusionOptions& o,
                          Eigen::AlignedBox3d& box, int stride) {
   stride = std::max(1, stride);
@@ -56,20 +62,25 @@ void extend_depth_bounds(const DepthFrame& f, const Eigen::Isometry3d& T, const 
     }
 }
 
+ParameterError no_depth_error(const FusionOptions& o) {
+  return ParameterError("fusion: no depth within [" + std::to_string(o.min_depth_m) + ", " +
+                        std::to_string(o.max_depth_m) + "] m in any posed frame");
+}
+
 VoxelGrid fusion_grid(const Eigen::AlignedBox3d& box, const FusionOptions& o) {
-  if (box.isEmpty())
-    throw ParameterError("fusion: no depth within [" + std::to_string(o.min_depth_m) + ", " +
-                         std::to_string(o.max_depth_m) + "] m in any posed frame");
+  if (box.isEmpty()) throw no_depth_error(o);
   const Eigen::Vector3d lo = box.min() - Eigen::Vector3d::Constant(o.bounds_margin_m);
   const Eigen::Vector3d hi = box.max() + Eigen::Vector3d::Constant(o.bounds_margin_m);
   const Eigen::Vector3d size = hi - lo;
   if (size.maxCoeff() > o.max_extent_m)
     throw ParameterError("fusion: the data spans " + std::to_string(size.maxCoeff()) +
                          " m, more than " + std::string(fusion_keys::max_extent_m.key) + " = " + std::to_string(o.max_extent_m));
+  // On the sparse volume's lattice (voxel centres at multiples of the voxel size), so that the
+  // two volumes sample the same points and their meshes can be compared vertex for vertex.
   VoxelGrid g;
   g.voxel_m = o.voxel_m;
-  g.origin = lo;
-  for (int k = 0; k < 3; ++k) g.dims[k] = static_cast<int>(std::ceil(size[k] / o.voxel_m)) + 1;
+  g.origin = (lo / o.voxel_m).array().floor().matrix() * o.voxel_m;
+  for (int k = 0; k < 3; ++k) g.dims[k] = static_cast<int>(std::ceil((hi[k] - g.origin[k]) / o.voxel_m)) + 1;
   return g;
 }
 

@@ -3,10 +3,12 @@
 #include <Eigen/Geometry>
 
 #include "core/frame/depth_frame.h"
+#include "core/fusion/sparse_tsdf_volume.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/normals/cloud_options.h"
 #include "core/params/parameter_key.h"
 #include "core/params/parameters.h"
+#include "core/util/error.h"
 
 namespace tunnelmap {
 
@@ -32,8 +34,9 @@ inline constexpr ParameterKey<double> bounds_margin_m{
     "fusion.bounds_margin_m", "m", 0.05, 0.0, 2.0, 0.01, Stage::Fusion, "Bounds margin",
     "The volume is the box of all fused points (world frame) grown by this margin"};
 inline constexpr ParameterKey<double> max_extent_m{
-    "fusion.max_extent_m", "m", 12.0, 0.5, 100.0, 0.5, Stage::Fusion, "Max extent",
-    "Largest volume side; a bigger point box is refused (asks for a coarser voxel or less depth)"};
+    "fusion.max_extent_m", "m", 2000.0, 0.5, 10000.0, 0.5, Stage::Fusion, "Max extent",
+    "Safety limit on the fused data's span along a world axis, far above any girder (memory "
+    "follows the surface, not this box)"};
 inline constexpr ParameterKey<double> pose_group_mm{
     "fusion.pose_group_mm", "mm", 50.0, 1.0, 1000.0, 1.0, Stage::Fusion, "Pose grouping",
     "Consecutive frames whose camera moved less than this (and 5 deg) are one arm pose"};
@@ -56,13 +59,17 @@ inline bool operator!=(const FusionOptions& a, const FusionOptions& b) { return 
 FusionOptions fusion_options(const Parameters& p);
 ParameterGroup fusion_parameter_group();  // table rows and rules, in table order
 TsdfOptions tsdf_options(const FusionOptions& o);
+SparseVolumeLimits sparse_volume_limits(const FusionOptions& o);
 
 // Grows `box` by the world positions of the frame's depth pixels inside the fusion depth range
 // (every `stride`-th pixel in both directions).
 void extend_depth_bounds(const DepthFrame& frame, const Eigen::Isometry3d& camera_to_world,
                          const FusionOptions& o, Eigen::AlignedBox3d& box, int stride = 4);
 
-// The voxel grid covering `box` plus the margin. ParameterError when the box is empty or a
+// What fusing frames without any depth in the fusion range throws.
+ParameterError no_depth_error(const FusionOptions& o);
+
+// The dense voxel grid covering `box` plus the margin. ParameterError when the box is empty or a
 // side exceeds fusion.max_extent_m.
 VoxelGrid fusion_grid(const Eigen::AlignedBox3d& box, const FusionOptions& o);
 

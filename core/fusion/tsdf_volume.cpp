@@ -39,14 +39,7 @@ void TsdfVolume::integrate(const DepthFrame& frame, const Eigen::Isometry3d& cam
   if (frame.empty()) return;
   const Eigen::Isometry3d world_to_cam = camera_to_world.inverse();
   const Eigen::Matrix3f R = world_to_cam.linear().cast<float>();
-  const Intrinsics& K = frame.intrinsics;
-  const float fx = float(K.fx), fy = float(K.fy), cx = float(K.cx), cy = float(K.cy);
-  const int W = frame.width, H = frame.height;
-  const float units = float(frame.depth_units_per_m);
-  const float trunc = float(options_.truncation_m), inv_trunc = 1.0f / trunc;
-  const float dmin = float(options_.min_depth_m), dmax = float(options_.max_depth_m);
-  const std::uint16_t wmax = static_cast<std::uint16_t>(std::clamp(options_.max_weight, 1, 65535));
-  const bool colour = frame.has_rgb();
+  const FrameProjection fp(frame, options_);
   const Eigen::Vector3f step_x = R.col(0) * float(grid_.voxel_m);  // camera-frame step per +x voxel
 
   auto slab = [&](int z_begin, int z_step) {
@@ -54,34 +47,8 @@ void TsdfVolume::integrate(const DepthFrame& frame, const Eigen::Isometry3d& cam
       for (int y = 0; y < grid_.dims.y(); ++y) {
         Eigen::Vector3f pc = (world_to_cam * grid_.position(0, y, z)).cast<float>();
         std::size_t idx = grid_.index(0, y, z);
-        for (int x = 0; x < grid_.dims.x(); ++x, pc += step_x, ++idx) {
-          if (pc.z() < dmin) continue;
-          const float iz = 1.0f / pc.z();
-          const float xn = pc.x() * iz, yn = pc.y() * iz;
-          const float uf = fx * xn + cx + 0.5f, vf = fy * yn + cy + 0.5f;
-          if (!(uf >= 0.0f && vf >= 0.0f && uf < float(W) && vf < float(H))) continue;
-          const int u = static_cast<int>(uf), v = static_cast<int>(vf);  // nearest pixel
-          const std::size_t pix = static_cast<std::size_t>(v) * W + u;
-          const float d = frame.depth[pix] / units;
-          if (!(d >= dmin && d <= dmax)) continue;  // also rejects NaN and 0
-          // Distance along the viewing ray (not along z): the ray is sqrt(1+xn^2+yn^2) longer.
-          const float sdf = (d - pc.z()) * std::sqrt(1.0f + xn * xn + yn * yn);
-          if (sdf < -trunc) continue;  // hidden behind the surface: unknown, leave it
-          const float t = std::min(1.0f, sdf * inv_trunc);
-          const std::uint16_t w = weight_[idx];
-          const float wf = float(w);
-          tsdf_[idx] = (tsdf_[idx] * wf + t) / (wf + 1.0f);
-          if (colour && sdf < trunc) {
-            // Own weight: free-space observations must not darken the surface colour.
-            const std::uint8_t* c = &frame.rgb[pix * 3];
-            std::uint8_t* o = &rgb_[idx * 3];
-            const float cw = float(color_weight_[idx]);
-            for (int k = 0; k < 3; ++k)
-              o[k] = static_cast<std::uint8_t>(std::lround((o[k] * cw + c[k]) / (cw + 1.0f)));
-            if (color_weight_[idx] < std::min<int>(wmax, 255)) ++color_weight_[idx];
-          }
-          weight_[idx] = std::min<std::uint16_t>(static_cast<std::uint16_t>(w + 1), wmax);
-        }
+        for (int x = 0; x < grid_.dims.x(); ++x, pc += step_x, ++idx)
+          update_voxel(fp, pc, tsdf_[idx], weight_[idx], &rgb_[idx * 3], color_weight_[idx]);
       }
   };
   int threads = options_.threads > 0 ? options_.threads

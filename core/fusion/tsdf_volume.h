@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/frame/depth_frame.h"
+#include "core/fusion/tsdf_update.h"
 
 namespace tunnelmap {
 
@@ -25,14 +26,6 @@ struct VoxelGrid {
   Eigen::Vector3d position(int x, int y, int z) const {
     return origin + voxel_m * Eigen::Vector3d(x, y, z);
   }
-};
-
-struct TsdfOptions {
-  double truncation_m = 0.03;
-  double min_depth_m = 0.3;
-  double max_depth_m = 2.5;
-  int max_weight = 64;
-  int threads = 0;  // 0 = hardware concurrency (at most 8)
 };
 
 class TsdfVolume {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <set>
 
 #include "core/export/mesh_ply.h"
 #include "core/fusion/fuse_dataset.h"
@@ -15,34 +16,18 @@
 #include "core/mapping/multi_scan_map.h"
 #include "core/sim/sim_dataset_writer.h"
 #include "core/util/error.h"
+#include "core/io/ply_mesh_reader.h"
 #include "mesh/tsdf_mesher.h"
 #include "tests/support/cli_runner.h"
+#include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
+using tunnelmap::testing::flat_wall;
 
 namespace {
 
-// A fronto-parallel wall at depth `z` (camera = world), uniform colour (200, 100, 50).
-DepthFrame flat_wall(double z) {
-  DepthFrame f;
-  f.intrinsics = Intrinsics::primesense_vga();
-  f.intrinsics.fx = f.intrinsics.fy = 570.3 / 4;
-  f.intrinsics.cx = 79.5;
-  f.intrinsics.cy = 59.5;
-  f.width = f.intrinsics.width = 160;
-  f.height = f.intrinsics.height = 120;
-  f.depth_units_per_m = 1000.0;
-  f.depth.assign(160 * 120, float(z * 1000.0));
-  f.rgb.assign(160 * 120 * 3, 0);
-  for (std::size_t i = 0; i < f.rgb.size(); i += 3) {
-    f.rgb[i] = 200;
-    f.rgb[i + 1] = 100;
-    f.rgb[i + 2] = 50;
-  }
-  return f;
-}
 
 Parameters test_params() {
   Parameters p;
@@ -103,7 +88,7 @@ TEST(Fusion, FlatWallMeshIsOnThePlaneFacingTheCameraWithItsColour) {
 TEST(Fusion, RefusesAnEmptyOrHugeVolume) {
   FusionOptions o;
   EXPECT_THROW(fusion_grid(Eigen::AlignedBox3d(), o), ParameterError);
-  Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d(20, 1, 1));
+  Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d(2100, 1, 1));
   EXPECT_THROW(fusion_grid(box, o), ParameterError);  // longer than fusion.max_extent_m
   o.voxel_m = 0.002;
   o.max_extent_m = 100;
@@ -185,6 +170,33 @@ TEST_F(SimSequence, SagDegradesTheMeshButNotPerFrameDetection) {
   }
 }
 
+// The sparse volume against the dense one on the same datasets: the same accuracy bound and
+// a vertex count within 5 %.
+TEST_F(SimSequence, SparseMeshMatchesTheDenseMeshOnTheLabAndSagDatasets) {
+  const Parameters p = test_params();
+  FuseSettings dense;
+  dense.dense = true;
+  for (const std::string& path : {exact, sag}) {
+    const Dataset ds = read_dataset(path);
+    const auto truth = ground_truth_planes(ds.ground_truth);
+    const FusionResult rs = fuse_dataset(ds, p), rd = fuse_dataset(ds, p, dense);
+    ASSERT_TRUE(rs.volume && !rs.dense_volume && rd.dense_volume && !rd.volume);
+    const TriangleMesh ms = extract_mesh(*rs.volume, 2), md = extract_mesh(*rd.dense_volume, 2);
+    const MeshAccuracy as = mesh_accuracy(ms, truth), ad = mesh_accuracy(md, truth);
+    std::printf("%s: sparse %zu vertices, %.2f %% within 10 mm, %zu KiB; dense %zu vertices, "
+                "%.2f %%, %zu KiB\n", path == exact ? "exact" : "sag", ms.vertices.size(),
+                100 * as.fraction_within, rs.volume->memory_bytes() >> 10, md.vertices.size(),
+                100 * ad.fraction_within, rd.dense_volume->memory_bytes() >> 10);
+    EXPECT_NEAR(double(ms.vertices.size()), double(md.vertices.size()), 0.05 * double(md.vertices.size()));
+    EXPECT_NEAR(as.fraction_within, ad.fraction_within, 0.002);  // same lattice: nearly the same mesh
+    EXPECT_NEAR(as.p95_m, ad.p95_m, 0.1 * ad.p95_m + 0.0005);
+    if (path == exact) {
+      EXPECT_GE(as.fraction_within, 0.95);  // the bound the dense mesh meets
+    }
+    EXPECT_LT(rs.volume->memory_bytes(), rd.dense_volume->memory_bytes());
+  }
+}
+
 TEST(MultiScanMap, PoseWithoutDetectionAsksToMoveAndRescan) {
   TunnelMap ok;
   ok.detected = true;
@@ -256,4 +268,49 @@ TEST_F(SimSequence, CliFuseWritesMeshMapAndJson) {
   const auto bad = tunnelmap::testing::run_cli("fuse " + tmp.file("nothing") + " --quiet");
   EXPECT_EQ(bad.exit_code, 3);
   EXPECT_EQ(tunnelmap::testing::count_lines(bad.err), 1);
+  // The memory the sparse volume used.
+  const nlohmann::json& v = j["volume"];
+  EXPECT_EQ(v["kind"], "sparse");
+  EXPECT_EQ(v["voxels"].get<std::size_t>(), v["blocks"].get<std::size_t>() * 512);
+  EXPECT_GT(v["bytes"].get<std::size_t>(), v["voxels"].get<std::size_t>() * 10);
+}
+
+// The pieces of --mesh-per-compartment together hold exactly the single mesh's vertices.
+TEST_F(SimSequence, CliMeshPiecesTogetherEqualTheSingleMesh) {
+  IoTempDir tmp;
+  const std::string common = "fuse " + exact + " --quiet --set fusion.voxel_mm=12 --no-pose-refinement";
+  const auto one = tunnelmap::testing::run_cli(common + " --mesh " + tmp.file("m.ply"));
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  // The lab dataset knows no diaphragms: the piece length is needed.
+  const auto none = tunnelmap::testing::run_cli(common + " --mesh-per-compartment " + tmp.file("p0"));
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("--piece-length"), std::string::npos) << none.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("p0")));
+  const auto cut = tunnelmap::testing::run_cli(common + " --mesh-per-compartment " + tmp.file("p") +
+                                               " --piece-length 0.4");
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  const nlohmann::json index = nlohmann::json::parse(tunnelmap::testing::slurp(tmp.file("p/pieces.json")));
+  EXPECT_EQ(index["cut_by"], "length");
+  ASSERT_GE(index["pieces"].size(), 3u);
+  auto key = [](const Eigen::Vector3f& v) {
+    return std::array<long, 3>{std::lround(v.x() * 1e4), std::lround(v.y() * 1e4), std::lround(v.z() * 1e4)};
+  };
+  const PlyMesh whole = read_ply_mesh(tmp.file("m.ply"));
+  std::set<std::array<long, 3>> single, together;
+  for (const Eigen::Vector3f& v : whole.vertices) single.insert(key(v));
+  std::size_t triangles = 0;
+  double last_from = -1e9, last_to = -1e9;
+  for (const nlohmann::json& piece : index["pieces"]) {
+    const PlyMesh m = read_ply_mesh(tmp.file("p/" + piece["file"].get<std::string>()));
+    EXPECT_EQ(m.vertices.size(), piece["vertices"].get<std::size_t>());
+    triangles += m.triangles.size();
+    for (const Eigen::Vector3f& v : m.vertices) together.insert(key(v));
+    EXPECT_LE(piece["from_m"].get<double>(), piece["to_m"].get<double>());
+    EXPECT_GE(piece["from_m"].get<double>(), last_from);  // in station order
+    EXPECT_GE(piece["to_m"].get<double>(), last_to);
+    last_from = piece["from_m"].get<double>();
+    last_to = piece["to_m"].get<double>();
+  }
+  EXPECT_EQ(triangles, whole.triangles.size());
+  EXPECT_EQ(together, single);
 }

@@ -1,0 +1,210 @@
+#include "mesh/sparse_mesher.h"
+
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <unordered_map>
+
+#include "mesh/flying_edges.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr int kChunkVoxels = kChunkBlocks * kBlockSide;
+// Samples per side: one voxel before the chunk, its own, and two after (the last cells' far
+// corners and their gradients).
+constexpr int kChunkSamples = kChunkVoxels + 3;
+
+int floor_div(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+// The chunk's samples, global voxel c0 - 1 + l at local index l; unallocated voxels are the
+// never-seen value (+1, weight 0).
+struct ChunkSamples {
+  std::vector<float> tsdf = std::vector<float>(std::size_t(kChunkSamples) * kChunkSamples * kChunkSamples, 1.0f);
+  std::vector<std::uint16_t> weight = std::vector<std::uint16_t>(tsdf.size(), 0);
+  std::vector<std::uint8_t> rgb = std::vector<std::uint8_t>(tsdf.size() * 3, 0);
+
+  static std::size_t index(int x, int y, int z) {
+    return (std::size_t(z) * kChunkSamples + y) * kChunkSamples + x;
+  }
+};
+
+void copy_block(const VoxelBlock& b, const Eigen::Vector3i& first_sample, ChunkSamples& s) {
+  const Eigen::Vector3i base = b.coords * kBlockSide - first_sample;  // block voxel 0, local
+  for (int z = 0; z < kBlockSide; ++z) {
+    const int lz = base.z() + z;
+    if (lz < 0 || lz >= kChunkSamples) continue;
+    for (int y = 0; y < kBlockSide; ++y) {
+      const int ly = base.y() + y;
+      if (ly < 0 || ly >= kChunkSamples) continue;
+      for (int x = 0; x < kBlockSide; ++x) {
+        const int lx = base.x() + x;
+        if (lx < 0 || lx >= kChunkSamples) continue;
+        const int from = VoxelBlock::local_index(x, y, z);
+        const std::size_t to = ChunkSamples::index(lx, ly, lz);
+        s.tsdf[to] = b.tsdf[std::size_t(from)];
+        s.weight[to] = b.weight[std::size_t(from)];
+        for (int k = 0; k < 3; ++k) s.rgb[to * 3 + k] = b.rgb[std::size_t(from) * 3 + k];
+      }
+    }
+  }
+}
+
+ChunkSamples gather_samples(const SparseTsdfVolume& volume, const Eigen::Vector3i& chunk) {
+  ChunkSamples s;
+  const Eigen::Vector3i first = chunk * kChunkVoxels - Eigen::Vector3i::Ones();
+  const Eigen::Vector3i lo = chunk * kChunkBlocks - Eigen::Vector3i::Ones();
+  const Eigen::Vector3i hi = chunk * kChunkBlocks + Eigen::Vector3i::Constant(kChunkBlocks);
+  for (int z = lo.z(); z <= hi.z(); ++z)
+    for (int y = lo.y(); y <= hi.y(); ++y)
+      for (int x = lo.x(); x <= hi.x(); ++x)
+        if (const VoxelBlock* b = volume.find({x, y, z})) copy_block(*b, first, s);
+  return s;
+}
+
+// The lattice edge a contour vertex (local sample units) lies on: the coordinate farthest
+// from a sample is the one along the edge.
+LatticeEdge edge_of(const double* q, const Eigen::Vector3i& first_sample) {
+  int axis = 0;
+  double best = -1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double off = std::abs(q[k] - std::round(q[k]));
+    if (off > best) best = off, axis = k;
+  }
+  LatticeEdge e;
+  e.axis = axis;
+  for (int k = 0; k < 3; ++k)
+    e.voxel[k] = first_sample[k] + int(k == axis ? std::floor(q[k]) : std::round(q[k]));
+  return e;
+}
+
+// Turns the lattice-frame vertices and normals into the world frame.
+void to_world(const Eigen::Matrix3d& lattice_to_world, TriangleMesh& mesh) {
+  if (lattice_to_world.isIdentity(0.0)) return;
+  const Eigen::Matrix3f R = lattice_to_world.cast<float>();
+  for (Eigen::Vector3f& v : mesh.vertices) v = R * v;
+  for (Eigen::Vector3f& n : mesh.normals) n = R * n;
+}
+
+struct LatticeEdgeHash {
+  std::size_t operator()(const LatticeEdge& e) const {
+    return BlockCoordsHash()(e.voxel) * 4u + static_cast<std::size_t>(e.axis);
+  }
+};
+
+}  // namespace
+
+std::vector<Eigen::Vector3i> occupied_chunks(const SparseTsdfVolume& volume) {
+  std::set<Eigen::Vector3i, ChunkLess> chunks;
+  for (const auto& b : volume.blocks())
+    chunks.insert({floor_div(b->coords.x(), kChunkBlocks), floor_div(b->coords.y(), kChunkBlocks),
+                   floor_div(b->coords.z(), kChunkBlocks)});
+  return {chunks.begin(), chunks.end()};
+}
+
+std::vector<Eigen::Vector3i> chunks_affected_by(const std::vector<Eigen::Vector3i>& blocks) {
+  std::set<Eigen::Vector3i, ChunkLess> chunks;
+  for (const Eigen::Vector3i& b : blocks) {
+    // Chunk c samples voxels [32c - 1, 32c + 33]; the block holds [8b, 8b + 7].
+    Eigen::Vector3i lo, hi;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = floor_div(b[k] * kBlockSide - (kChunkVoxels + 1) + kChunkVoxels - 1, kChunkVoxels);
+      hi[k] = floor_div(b[k] * kBlockSide + kBlockSide, kChunkVoxels);
+    }
+    for (int z = lo.z(); z <= hi.z(); ++z)
+      for (int y = lo.y(); y <= hi.y(); ++y)
+        for (int x = lo.x(); x <= hi.x(); ++x) chunks.insert({x, y, z});
+  }
+  return {chunks.begin(), chunks.end()};
+}
+
+MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& chunk, int min_weight) {
+  const ChunkSamples s = gather_samples(volume, chunk);
+  const Eigen::Vector3i first = chunk * kChunkVoxels - Eigen::Vector3i::Ones();
+  const vtkSmartPointer<vtkImageData> image = wrap_tsdf_image(
+      Eigen::Vector3i::Constant(kChunkSamples), Eigen::Vector3d::Zero(), 1.0, s.tsdf.data(), s.rgb.data());
+  const vtkSmartPointer<vtkPolyData> poly = zero_level_set(image);
+
+  auto seen = [&](int x, int y, int z) { return s.weight[ChunkSamples::index(x, y, z)] >= min_weight; };
+  auto verdict = [&](const Eigen::Vector3i& c) {
+    if (c.minCoeff() < 1 || c.maxCoeff() > kChunkVoxels) return CellVerdict::Foreign;  // a neighbour's
+    for (int k = 0; k < 8; ++k)
+      if (!seen(c.x() + (k & 1), c.y() + ((k >> 1) & 1), c.z() + ((k >> 2) & 1))) return CellVerdict::Unseen;
+    return CellVerdict::Kept;
+  };
+  MeshChunk out;
+  MeshStats st;
+  copy_kept_triangles(poly, verdict, first.cast<double>() * volume.voxel_m(), volume.voxel_m(), out.mesh, st,
+                      [&](vtkIdType id) {
+                        double q[3];
+                        poly->GetPoint(id, q);
+                        out.vertex_edges.push_back(edge_of(q, first));
+                      });
+  to_world(volume.lattice_to_world(), out.mesh);
+  out.raw_triangles = st.raw_triangles;
+  out.dropped_unseen = st.dropped_unseen;
+  return out;
+}
+
+TriangleMesh merge_chunks(const ChunkMap& chunks) {
+  TriangleMesh mesh;
+  std::unordered_map<LatticeEdge, std::int32_t, LatticeEdgeHash> vertex_of;
+  for (const auto& [key, c] : chunks) {
+    std::vector<std::int32_t> remap(c.mesh.vertices.size());
+    for (std::size_t i = 0; i < c.mesh.vertices.size(); ++i) {
+      const auto [it, added] = vertex_of.try_emplace(c.vertex_edges[i], std::int32_t(mesh.vertices.size()));
+      remap[i] = it->second;
+      if (!added) continue;
+      mesh.vertices.push_back(c.mesh.vertices[i]);
+      if (!c.mesh.normals.empty()) mesh.normals.push_back(c.mesh.normals[i]);
+      if (!c.mesh.colors.empty()) mesh.colors.push_back(c.mesh.colors[i]);
+    }
+    for (const auto& t : c.mesh.triangles)
+      mesh.triangles.push_back({remap[std::size_t(t[0])], remap[std::size_t(t[1])], remap[std::size_t(t[2])]});
+  }
+  return mesh;
+}
+
+namespace {
+// Extracts `which` (in parallel) into `chunks`, replacing what was there; the chunks' counts.
+MeshStats extract_chunks(const SparseTsdfVolume& volume, const std::vector<Eigen::Vector3i>& which,
+                         int min_weight, ChunkMap& chunks) {
+  std::vector<MeshChunk> done(which.size());
+  tbb::parallel_for(std::size_t(0), which.size(),
+                    [&](std::size_t i) { done[i] = extract_chunk(volume, which[i], min_weight); });
+  MeshStats st;
+  for (std::size_t i = 0; i < which.size(); ++i) {
+    st.raw_triangles += done[i].raw_triangles;
+    st.dropped_unseen += done[i].dropped_unseen;
+    if (done[i].mesh.triangles.empty())
+      chunks.erase(which[i]);
+    else
+      chunks[which[i]] = std::move(done[i]);
+  }
+  return st;
+}
+}  // namespace
+
+TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  ChunkMap chunks;
+  MeshStats st = extract_chunks(volume, occupied_chunks(volume), min_weight, chunks);
+  TriangleMesh mesh = merge_chunks(chunks);
+  st.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (stats) *stats = st;
+  return mesh;
+}
+
+std::size_t IncrementalMesher::update(const SparseTsdfVolume& volume) {
+  const std::vector<Eigen::Vector3i> which =
+      chunks_affected_by(volume.blocks_touched_since(frames_meshed_));
+  extract_chunks(volume, which, min_weight_, chunks_);
+  frames_meshed_ = volume.frames_integrated();
+  return which.size();
+}
+
+}  // namespace tunnelmap
