@@ -32,7 +32,7 @@ inline constexpr ParameterKey<int> min_weight{
     "Mesh only cells whose 8 voxels were seen at least this many times"};
 inline constexpr ParameterKey<double> bounds_margin_m{
     "fusion.bounds_margin_m", "m", 0.05, 0.0, 2.0, 0.01, Stage::Fusion, "Bounds margin",
-    "The volume is the box of all fused points (world frame) grown by this margin"};
+    "The dense volume (fuse --dense) is the box of all fused points grown by this margin"};
 inline constexpr ParameterKey<double> max_extent_m{
     "fusion.max_extent_m", "m", 2000.0, 0.5, 10000.0, 0.5, Stage::Fusion, "Max extent",
     "Safety limit on the fused data's span along a world axis, far above any girder (memory "
