@@ -9,7 +9,8 @@ bool operator==(const StationMapOptions& a, const StationMapOptions& b) {
          a.design_height_m == b.design_height_m && a.tolerance_mm == b.tolerance_mm &&
          a.section_change_mm == b.section_change_mm && a.min_section_stations == b.min_section_stations &&
          a.zone_gap_m == b.zone_gap_m && a.max_symmetric_step_m == b.max_symmetric_step_m &&
-         a.min_support_points == b.min_support_points && a.near_range_m == b.near_range_m;
+         a.min_support_points == b.min_support_points && a.near_range_m == b.near_range_m &&
+         a.per_frame_sizes == b.per_frame_sizes;
 }
 
 StationMapOptions station_map_options(const Parameters& p) {
@@ -24,13 +25,14 @@ StationMapOptions station_map_options(const Parameters& p) {
   o.max_symmetric_step_m = mm_to_m(p.get(tunnel_keys::symmetric_step_max_mm));
   o.min_support_points = p.get(map_keys::min_station_points);
   o.near_range_m = p.get(map_keys::near_range_m);
+  o.per_frame_sizes = p.get(map_keys::per_frame_sizes);
   return o;
 }
 
 ParameterGroup map_parameter_group() {
   using namespace map_keys;
   return {{station_step_m.spec(), tolerance_mm.spec(), section_change_mm.spec(), min_section_m.spec(),
-           min_station_points.spec(), near_range_m.spec()},
+           min_station_points.spec(), near_range_m.spec(), per_frame_sizes.spec()},
           {}};
 }
 

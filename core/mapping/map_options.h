@@ -33,6 +33,11 @@ inline constexpr ParameterKey<double> near_range_m{
     "map.near_range_m", "m", 2.5, 0.0, 20.0, 0.1, Stage::Map, "Near range",
     "A wall at a station seen within this distance of the camera by at least Station support points "
     "is measured from those views alone; farther views fill in only where no near one does (0: all views)"};
+inline constexpr ParameterKey<bool> per_frame_sizes{
+    "map.per_frame_sizes", "", false, 0, 1, 1, Stage::Map, "Per-frame sizes",
+    "1: a station's width and height are the median of each frame's own (both walls of a pair from "
+    "one pose, so drifting poses cannot split it); 0: from the walls' positions pooled over frames. "
+    "Needs zone clusters that find the edge bands (the lab and field presets)"};
 }  // namespace map_keys
 
 // Whole stations in `length_m` (at least one).
@@ -62,6 +67,8 @@ struct StationMapOptions {
   int min_support_points = map_keys::min_station_points.default_value;
   // Views within this depth measure a station's wall where they have the support (0: all views).
   double near_range_m = map_keys::near_range_m.default_value;
+  // Station sizes from each frame's own walls (drift-proof) instead of pooled positions.
+  bool per_frame_sizes = map_keys::per_frame_sizes.default_value;
 };
 bool operator==(const StationMapOptions& a, const StationMapOptions& b);
 inline bool operator!=(const StationMapOptions& a, const StationMapOptions& b) { return !(a == b); }

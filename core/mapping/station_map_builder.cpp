@@ -253,10 +253,17 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
       // The map's own dimensions there, each from frames that saw both walls of the pair:
       // an error of the earlier frames' poses does not enter.
       const Dims here = station_dims(k);
+      const WallProfile* w = at(k);
       const WallProfile& f = mine[static_cast<std::size_t>(k - f0)];
       for (int a : {0, 2}) {
-        if ((a == 0 ? here.width_frames : here.height_frames) < 2) continue;
-        const double d = dim(f, a) - (a == 0 ? here.width_m : here.height_m);
+        double d = kNaN;
+        if (options_.per_frame_sizes) {
+          if ((a == 0 ? here.width_frames : here.height_frames) < 2) continue;
+          d = dim(f, a) - (a == 0 ? here.width_m : here.height_m);
+        } else {
+          if (!w || w->frames < 2) continue;
+          d = dim(f, a) - dim(*w, a);
+        }
         if (std::isnan(d)) continue;
         ++compared;
         if (std::abs(d) > tunnel_.context_tolerance_m) ++disagree;
@@ -492,7 +499,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   for (std::size_t k = 0; k < n; ++k) {
     // Each frame's own dimensions first (drift in the poses cannot make them differ); the
     // pooled wall positions where no frame saw both walls of a pair at the station.
-    const Dims d = station_dims(k0 + static_cast<int>(k));
+    const Dims d = options_.per_frame_sizes ? station_dims(k0 + static_cast<int>(k)) : Dims{kNaN, kNaN, 0, 0};
     w[k] = !std::isnan(d.width_m) ? d.width_m : prof[k].wall_m[0] + prof[k].wall_m[1];
     h[k] = !std::isnan(d.height_m) ? d.height_m : prof[k].wall_m[2] + prof[k].wall_m[3];
   }

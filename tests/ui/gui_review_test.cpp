@@ -259,8 +259,11 @@ class GuiReviewTest : public QObject {
     const double shown_ms = table->item(4, 5)->text().toDouble();
     qInfo("Time column: %.1f ms after the full run, %.1f ms after a re-run from stage %d that took %.2f ms",
           full_ms, shown_ms, int(w.last_outcome().from), rerun_total);
-    // The whole pipeline takes milliseconds (3 ms per frame here), the re-run a few hundredths.
-    QVERIFY2(full_ms > 1.0 && full_ms > 10.0 * rerun_total && std::abs(shown_ms - full_ms) < 0.5 * full_ms,
+    // The whole pipeline takes milliseconds (3-10 ms per frame here), the re-run a few
+    // hundredths. The shown row is the frame's own run (not the sequence's, whose parameters
+    // differ now), so its whole-pipeline time is that run's: of the same order, not equal.
+    QVERIFY2(full_ms > 1.0 && full_ms > 10.0 * rerun_total && shown_ms > 10.0 * rerun_total &&
+                 shown_ms < 10.0 * full_ms,
              qPrintable(QString("%1 vs %2 (re-run %3)").arg(shown_ms).arg(full_ms).arg(rerun_total)));
     const auto flagged = plot->out_of_tolerance();
     QVERIFY2(!flagged.empty(), "0.5 mm tolerance flags no frame");

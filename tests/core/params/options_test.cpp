@@ -123,7 +123,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "tunnel.context_tolerance_mm", "tunnel.max_pair_angle_deg", "tunnel.symmetric_step_max_mm",
       "tunnel.width_min_m", "tunnel.width_max_m", "tunnel.height_min_m", "tunnel.height_max_m",
       "zones.forbidden_band_m", "tunnel.design_width_m", "tunnel.design_height_m", "map.station_step_m",
-      "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m",
+      "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m", "map.per_frame_sizes",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",
       "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.pose_group_mm", "ransac.iterations",
       "ransac.sample_step", "ransac.distance_mm", "ransac.max_planes", "ransac.min_plane_points",
