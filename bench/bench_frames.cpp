@@ -1,4 +1,5 @@
 #include "bench/bench_frames.h"
+#include "core/util/build_paths.h"
 
 #include <limits>
 

@@ -20,6 +20,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/atomic_file.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 
 using namespace tunnelmap;
@@ -44,7 +45,7 @@ const char* const kUsage =
     "  --min-recall R    exit 1 when any preset x grid step has recall below R (0..1)\n"
     "  --min-precision P exit 1 when any preset x grid step has precision below P (0..1)\n";
 
-const std::string kDefaultPresetsDir = TUNNELMAP_SOURCE_DIR "/resources/presets";
+const std::string kDefaultPresetsDir = std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets";
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;

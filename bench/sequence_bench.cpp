@@ -12,9 +12,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "core/io/frame_source.h"
 #include "core/engine/run_engine.h"
+#include "core/io/frame_source.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/util/build_paths.h"
 
 namespace tunnelmap::bench {
 namespace {

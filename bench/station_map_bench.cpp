@@ -13,6 +13,7 @@
 #include "core/io/dataset.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/util/build_paths.h"
 
 namespace tunnelmap::bench {
 namespace {

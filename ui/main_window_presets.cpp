@@ -7,6 +7,7 @@
 #include <QPushButton>
 #include <nlohmann/json.hpp>
 
+#include "core/util/build_paths.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 

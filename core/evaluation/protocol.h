@@ -10,6 +10,7 @@
 #include "core/baselines/method_runner.h"
 #include "core/evaluation/cell_result.h"
 #include "core/sim/sim_config.h"
+#include "core/util/build_paths.h"
 
 namespace tunnelmap {
 
@@ -19,7 +20,7 @@ struct ProtocolOptions {
   int ransac_frames_per_cell = 10;  // R&L is slow by design: CI runs it on fewer frames
   unsigned seed = 1;
   BaselineOptions baselines;
-  std::string presets_dir = TUNNELMAP_SOURCE_DIR "/resources/presets";
+  std::string presets_dir = std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets";
   std::vector<std::string> preset_overrides;  // KEY=VALUE, applied to every preset after loading
   std::function<void(const std::string&)> progress;  // one line per finished cell, may be empty
 };

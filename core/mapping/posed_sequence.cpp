@@ -5,6 +5,7 @@
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/station_map_builder.h"
+#include "core/mapping/structure_slam.h"
 
 namespace tunnelmap {
 
@@ -17,9 +18,9 @@ MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vecto
   out.poses = poses;
   const StationMapOptions so = station_map_options(params);
   if (refine) {
-    PoseRefinementOptions ro;
-    ro.station_step_m = so.station_step_m;
-    out.refinement = refine_poses(maps, walls, poses, out.groups, ro);
+    StructureSlam slam(slam_options(params));
+    for (std::size_t i = 0; i < maps.size(); ++i) slam.add_frame(maps[i], walls[i], poses[i], out.groups[i]);
+    out.refinement = slam.finish();
     if (out.refinement.ran) out.poses = out.refinement.poses;
   }
   StationMapBuilder builder(so, tunnel_options(params));

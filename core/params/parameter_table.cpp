@@ -3,6 +3,7 @@
 #include "core/baselines/baseline_options.h"
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/map_options.h"
+#include "core/mapping/slam_options.h"
 #include "core/normals/cloud_options.h"
 #include "core/normals/normal_options.h"
 #include "core/planes/grow_options.h"
@@ -29,7 +30,8 @@ namespace {
 // then the whole-tunnel map, fusion and the baselines).
 const std::vector<ParameterGroup>& groups() {
   static const std::vector<ParameterGroup> all = {cloud_parameter_group(), normal_parameter_group(), grow_parameter_group(),
-                                                  tunnel_parameter_group(), map_parameter_group(),    fusion_parameter_group(),
+                                                  tunnel_parameter_group(), map_parameter_group(),    slam_parameter_group(),
+                                                  fusion_parameter_group(),
                                                   baseline_parameter_group()};
   return all;
 }

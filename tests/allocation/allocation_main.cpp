@@ -16,6 +16,7 @@
 
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "tests/allocation/counting_allocator.h"
 
 using namespace tunnelmap;

@@ -16,6 +16,7 @@
 #include "core/io/frame_source.h"
 #include "core/pipeline/sequence_runner.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 namespace fs = std::filesystem;

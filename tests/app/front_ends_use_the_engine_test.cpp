@@ -8,6 +8,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include "core/util/build_paths.h"
 
 namespace {
 

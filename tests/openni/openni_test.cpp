@@ -19,6 +19,7 @@
 #include "core/params/parameters.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 #include "sensors/openni/device_frame_source.h"
 #include "sensors/openni/device_list.h"
@@ -270,13 +271,13 @@ TEST_F(OpenNiTest, UnpluggingMidRecordingKeepsWhatWasRecorded) {
 }
 
 TEST_F(OpenNiTest, UnpluggingMidStreamIsAClearError) {
-  openni2::DeviceFrameSource source("tunnelmap-sim://lab?disconnect_after=5&frames=5", 10, ReadOptions());
+  openni2::DeviceFrameSource source("tunnelmap-sim://lab?disconnect_after=5&frames=5&fps=0", 10, ReadOptions());
   for (std::size_t i = 0; i < 5; ++i) EXPECT_FALSE(source.load(i).empty());
   try {
     source.load(5);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "tunnelmap-sim://lab?disconnect_after=5&frames=5");
+    EXPECT_EQ(e.file(), "tunnelmap-sim://lab?disconnect_after=5&frames=5&fps=0");
     EXPECT_EQ(e.problem(), "device disconnected after 5 frames");
   }
 }

@@ -18,6 +18,7 @@
 #include "core/params/parameters.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "sensors/openni/device_frame_source.h"
 #include "sensors/openni/openni_context.h"
 #include "tests/soak/process_stats.h"

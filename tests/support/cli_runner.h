@@ -6,6 +6,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "core/util/build_paths.h"
 #include "tests/support/io_temp_dir.h"
 
 namespace tunnelmap::testing {

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/util/build_paths.h"
 #include "sensors/openni/register_openni.h"
 #include "ui/main_window.h"
 #include "ui/message_log.h"

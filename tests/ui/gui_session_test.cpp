@@ -24,6 +24,7 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include "core/util/build_paths.h"
 #include "sensors/openni/register_openni.h"
 #include "ui/main_window.h"
 #include "ui/message_log.h"

@@ -24,6 +24,7 @@
 
 #include "core/sim/sim_config.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/util/build_paths.h"
 #include "sensors/openni/register_openni.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"

@@ -14,12 +14,13 @@
 #include <cmath>
 #include <memory>
 
+#include "core/util/build_paths.h"
 #include "tests/ui/synthetic_tunnel.h"
 #include "ui/cross_section_panel.h"
-#include "ui/profile_plot.h"
-#include "ui/view3d_widget.h"
 #include "ui/depth_view_widget.h"
 #include "ui/main_window.h"
+#include "ui/profile_plot.h"
+#include "ui/view3d_widget.h"
 #include <QFile>
 #include <QImage>
 #include <QProcess>

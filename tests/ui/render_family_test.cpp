@@ -10,6 +10,7 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "core/util/build_paths.h"
 #include "tests/ui/fresh_dir.h"
 #include "ui/scene/image_checks.h"
 #include "ui/scene/rgb_image.h"

@@ -11,6 +11,7 @@
 
 #include "app/cli/map_image.h"
 #include "core/export/map_ply.h"
+#include "core/util/build_paths.h"
 #include "tests/ui/fresh_dir.h"
 #include "tests/ui/synthetic_tunnel.h"
 #include "ui/scene/image_checks.h"

@@ -11,6 +11,7 @@
 #include <vtkCoordinate.h>
 
 #include "app/render/osmesa_window.h"
+#include "core/util/build_paths.h"
 #include "tests/ui/synthetic_tunnel.h"
 #include "ui/scene/image_checks.h"
 #include "ui/scene/tunnel_scene.h"

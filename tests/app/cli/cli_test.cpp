@@ -11,6 +11,7 @@
 #include <pcl/conversions.h>
 #include <pcl/point_types.h>
 
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 
 using namespace tunnelmap::testing;

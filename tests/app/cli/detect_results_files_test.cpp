@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/report/statistics.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 
 using namespace tunnelmap;

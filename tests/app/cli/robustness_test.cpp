@@ -15,6 +15,7 @@
 
 #include "core/export/mesh_ply.h"
 #include "core/io/ply_mesh_reader.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 #include "tests/support/cli_runner.h"
 

@@ -5,10 +5,11 @@
 
 #include "core/engine/frame_run.h"
 #include "core/engine/run_engine.h"
-#include "core/report/results_json.h"
 #include "core/io/json_file.h"
 #include "core/planes/grow_options.h"
+#include "core/report/results_json.h"
 #include "core/tunnel/tunnel_options.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 
 using namespace tunnelmap;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/evaluation/girder_protocol.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
 

@@ -11,6 +11,7 @@
 
 #include "core/io/depth_png.h"
 #include "core/io/read_options.h"
+#include "core/util/build_paths.h"
 #include "tests/support/expect_input_error.h"
 #include "tests/support/io_temp_dir.h"
 

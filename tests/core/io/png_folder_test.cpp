@@ -8,6 +8,7 @@
 #include "core/io/depth_png.h"
 #include "core/io/frame_source.h"
 #include "core/io/png_folder.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/expect_input_error.h"
 #include "tests/support/io_temp_dir.h"

@@ -7,6 +7,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
 

@@ -14,6 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/mapping/station_sections.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
 

@@ -8,6 +8,7 @@
 #include "core/io/depth_png.h"
 #include "core/normals/normals_row_avx2.h"
 #include "core/pipeline/pipeline.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 

@@ -10,6 +10,7 @@
 #include "core/baselines/method_runner.h"
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/map_options.h"
+#include "core/mapping/slam_options.h"
 #include "core/normals/cloud_options.h"
 #include "core/normals/normal_options.h"
 #include "core/params/parameters.h"
@@ -28,12 +29,13 @@ struct AllOptions {
   TunnelOptions tunnel;
   FusionOptions fusion;
   StationMapOptions map;
+  SlamOptions slam;
   BaselineOptions baselines;
 };
 
 AllOptions derive(const Parameters& p) {
-  return {cloud_options(p),  normal_options(p),      grow_options(p),    tunnel_options(p),
-          fusion_options(p), station_map_options(p), baseline_options(p)};
+  return {cloud_options(p),  normal_options(p),      grow_options(p),  tunnel_options(p),
+          fusion_options(p), station_map_options(p), slam_options(p), baseline_options(p)};
 }
 
 // The stages whose options differ.
@@ -45,6 +47,7 @@ std::vector<std::string> changed(const AllOptions& a, const AllOptions& b) {
   if (a.tunnel != b.tunnel) out.push_back("tunnel");
   if (a.fusion != b.fusion) out.push_back("fusion");
   if (a.map != b.map) out.push_back("map");
+  if (a.slam != b.slam) out.push_back("slam");
   if (a.baselines != b.baselines) out.push_back("baselines");
   return out;
 }
@@ -58,6 +61,7 @@ TEST(ParameterDeclarations, DefaultConstructedOptionsEqualThoseOfDefaultParamete
   EXPECT_TRUE(GrowOptions() == grow_options(defaults));
   EXPECT_TRUE(TunnelOptions() == tunnel_options(defaults));
   EXPECT_TRUE(FusionOptions() == fusion_options(defaults));
+  EXPECT_TRUE(SlamOptions() == slam_options(defaults));
   EXPECT_TRUE(StationMapOptions() == station_map_options(defaults));
   EXPECT_TRUE(BaselineOptions() == baseline_options(defaults));
   // The values the structs held before they took them from the declarations.
@@ -124,6 +128,9 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "tunnel.width_min_m", "tunnel.width_max_m", "tunnel.height_min_m", "tunnel.height_max_m",
       "zones.forbidden_band_m", "tunnel.design_width_m", "tunnel.design_height_m", "map.station_step_m",
       "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m", "map.per_frame_sizes",
+      "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m",
+      "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
+      "slam.patch_floor_mm", "slam.window_groups",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",
       "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.pose_group_mm", "ransac.iterations",
       "ransac.sample_step", "ransac.distance_mm", "ransac.max_planes", "ransac.min_plane_points",

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/params/parameters.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/expect_input_error.h"

@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/report/results_json.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 

@@ -8,6 +8,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/report/results_json.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "tests/support/synthetic_scene.h"
 
 using namespace tunnelmap;

@@ -10,6 +10,7 @@
 #include "core/pipeline/sequence_runner.h"
 #include "core/report/results_json.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 
 using namespace tunnelmap;

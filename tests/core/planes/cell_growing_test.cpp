@@ -7,11 +7,12 @@
 #include <random>
 #include <string>
 
+#include "core/pipeline/pipeline.h"
 #include "core/planes/cell_fits.h"
 #include "core/planes/cell_moments_avx2.h"
-#include "core/pipeline/pipeline.h"
 #include "core/planes/plane_growing.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "tests/core/planes/hand_cloud.h"
 
 using namespace tunnelmap;

@@ -15,6 +15,7 @@
 #include "core/planes/plane_contour.h"
 #include "core/planes/polygon_simplify.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 

@@ -14,6 +14,7 @@
 
 #include "core/io/depth_png.h"
 #include "core/pipeline/pipeline.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 

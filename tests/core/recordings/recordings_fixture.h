@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include "core/util/build_paths.h"
 
 namespace tunnelmap::testing {
 

@@ -22,6 +22,7 @@
 #include "core/sim/sim_config_json.h"
 #include "core/sim/sim_dataset_writer.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {

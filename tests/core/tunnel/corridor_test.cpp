@@ -13,6 +13,7 @@
 #include "core/params/parameters.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 
 using namespace tunnelmap;

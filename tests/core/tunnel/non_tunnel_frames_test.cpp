@@ -9,6 +9,7 @@
 #include "core/engine/frame_run.h"
 #include "core/io/frame_source.h"
 #include "core/tunnel/tunnel_options.h"
+#include "core/util/build_paths.h"
 
 using namespace tunnelmap;
 

@@ -1,0 +1,81 @@
+#pragma once
+// Parameters of localisation and mapping against the girder's structure (slam.*), declared
+// once, and the options StructureSlam takes. See docs/tunnel-map.md.
+#include "core/params/parameter_key.h"
+
+namespace tunnelmap {
+
+class Parameters;
+
+namespace slam_keys {
+inline constexpr ParameterKey<double> odometry_mm_per_sqrt_m{
+    "slam.odometry_mm_per_sqrt_m", "mm", 10.0, 0.1, 1000.0, 0.1, Stage::Map, "Odometry drift (translation)",
+    "Standard deviation of the odometry's position error per square root of metre travelled"};
+inline constexpr ParameterKey<double> odometry_deg_per_sqrt_m{
+    "slam.odometry_deg_per_sqrt_m", "deg", 0.2, 0.001, 10.0, 0.001, Stage::Map, "Odometry drift (rotation)",
+    "Standard deviation of the odometry's heading error per square root of metre travelled"};
+inline constexpr ParameterKey<bool> odometry_in_world{
+    "slam.odometry_in_world", "", true, 0, 1, 1, Stage::Map, "Position drift in the world",
+    "1: the odometry's position and heading drift as two random walks, position in the world frame "
+    "(as the simulator draws them); 0: its position error is in the robot's frame, so a heading "
+    "error carries each step sideways (dead reckoning)"};
+inline constexpr ParameterKey<double> band_m{
+    "slam.band_m", "m", 1.0, 0.2, 10.0, 0.1, Stage::Map, "Wall band",
+    "Length along the girder over which one wall is one plane landmark"};
+inline constexpr ParameterKey<double> max_wall_depth_m{
+    "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
+    "Wall points farther from the camera than this do not localise it"};
+inline constexpr ParameterKey<double> max_plate_depth_m{
+    "slam.max_plate_depth_m", "m", 2.5, 0.5, 20.0, 0.1, Stage::Map, "Plate range",
+    "Plates across the girder farther than this do not localise the camera (their depth is "
+    "quantised too coarsely)"};
+inline constexpr ParameterKey<double> plate_gate_m{
+    "slam.plate_gate_m", "m", 0.3, 0.02, 2.0, 0.01, Stage::Map, "Plate gate",
+    "A plate seen within this distance along the girder of a known plate is that plate; keep it "
+    "well below half the diaphragm spacing"};
+inline constexpr ParameterKey<double> point_sigma_mm{
+    "slam.point_sigma_mm", "mm", 1.5, 0.05, 100.0, 0.05, Stage::Map, "Depth noise at 1 m",
+    "Standard deviation of one depth point at 1 m; it grows with the square of the depth"};
+inline constexpr ParameterKey<double> patch_floor_mm{
+    "slam.patch_floor_mm", "mm", 1.0, 0.01, 100.0, 0.01, Stage::Map, "Patch floor",
+    "Smallest uncertainty of a patch's position, however many points it has (calibration, "
+    "quantisation)"};
+inline constexpr ParameterKey<int> window_groups{
+    "slam.window_groups", "poses", 12, 2, 1000, 1, Stage::Map, "Window",
+    "Pose groups re-estimated after each new frame while the sequence runs (the batch "
+    "optimisation at the end re-estimates all)"};
+}  // namespace slam_keys
+
+struct SlamOptions {
+  double odometry_m_per_sqrt_m = mm_to_m(slam_keys::odometry_mm_per_sqrt_m.default_value);
+  double odometry_deg_per_sqrt_m = slam_keys::odometry_deg_per_sqrt_m.default_value;
+  bool odometry_in_world = slam_keys::odometry_in_world.default_value;
+  double band_m = slam_keys::band_m.default_value;
+  double max_wall_depth_m = slam_keys::max_wall_depth_m.default_value;
+  double max_plate_depth_m = slam_keys::max_plate_depth_m.default_value;
+  double plate_gate_m = slam_keys::plate_gate_m.default_value;
+  double point_sigma_m = mm_to_m(slam_keys::point_sigma_mm.default_value);
+  double patch_floor_m = mm_to_m(slam_keys::patch_floor_mm.default_value);
+  int window_groups = slam_keys::window_groups.default_value;
+  // Odometry of pose groups that did not move still has this much uncertainty.
+  double min_odometry_m = 0.0005;
+  double min_odometry_deg = 0.01;
+  int min_patch_points = 200;
+  // A wall's zones are layers of its landmark: a patch within `layer_tolerance_m` of a layer
+  // (after the frame's shift along the wall's normal, at most `max_layer_shift_m` and changing
+  // by at most `max_layer_slope` per metre) is that layer.
+  double layer_tolerance_m = 0.003;
+  double max_layer_shift_m = 0.05;
+  double max_layer_slope = 0.02;  // shift per metre along the girder (a heading error of ~1 deg)  // fewer points in a band or plate say little
+  // A direction whose landmark information is below this fraction of the strongest is
+  // left to odometry (reported as degenerate).
+  double degenerate_ratio = 1e-4;
+};
+
+bool operator==(const SlamOptions& a, const SlamOptions& b);
+inline bool operator!=(const SlamOptions& a, const SlamOptions& b) { return !(a == b); }
+
+SlamOptions slam_options(const Parameters& params);
+ParameterGroup slam_parameter_group();  // table rows, in table order
+
+}  // namespace tunnelmap

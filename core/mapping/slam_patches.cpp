@@ -1,0 +1,86 @@
+#include "core/mapping/slam_patches.h"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <utility>
+
+namespace tunnelmap {
+
+namespace {
+
+struct Moments {
+  double weight = 0.0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  void add(const Eigen::Vector3d& p, double w) {
+    weight += w;
+    sum += w * p;
+    outer += w * p * p.transpose();
+  }
+};
+
+// Centroid, in-plane spread and the patch's own normal; the scatter along that normal (the
+// points' noise) is left out, so that a patch lying exactly on its landmark has no residual.
+bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
+  if (m.weight < o.min_patch_points) return false;
+  out.points = static_cast<int>(m.weight);
+  out.centroid = m.sum / m.weight;
+  const Eigen::Matrix3d cov = m.outer / m.weight - out.centroid * out.centroid.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  out.spread.setZero();
+  for (int k = 1; k < 3; ++k)
+    out.spread.col(k - 1) = eig.eigenvectors().col(k) * std::sqrt(std::max(0.0, eig.eigenvalues()[k]));
+  // Structured light's depth error grows with z^2, and part of it does not average out over a
+  // patch (a plate seen head-on sits on one disparity step): the floor grows alike.
+  const double z = out.centroid.norm();
+  const double growth = std::max(1.0, z * z);
+  const double point_sigma = o.point_sigma_m * growth, floor = o.patch_floor_m * growth;
+  out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor);
+  return true;
+}
+
+}  // namespace
+
+std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
+  // (wall, band, inset): the frame's zones of one wall stay apart (the inset tells them apart
+  // within the frame; which of them is the outer surface it may misjudge).
+  std::map<std::tuple<int, long, float>, Moments> bands;
+  std::map<int, Moments> plates;                   // plane id
+  for (const WallSample& s : walls.samples) {
+    const Eigen::Vector3d p = s.point.cast<double>();
+    if (s.wall == kTransverseSample) {
+      if (p.z() <= o.max_plate_depth_m) plates[s.plane].add(p, s.points);
+      continue;
+    }
+    if (s.wall >= 4 || !s.on_surface || p.z() > o.max_wall_depth_m) continue;
+    const Wall& wall = map.walls[s.wall];
+    if (wall.normal.squaredNorm() < 0.5) continue;
+    const double station = camera_station_m + axis_cam.dot(p);
+    bands[{s.wall, static_cast<long>(std::floor(station / o.band_m)), s.inset_m}].add(p, s.points);
+  }
+  std::vector<FramePatch> out;
+  for (const auto& [key, m] : bands) {
+    FramePatch patch;
+    if (!reduce(m, o, patch)) continue;
+    patch.wall = std::get<0>(key);
+    patch.band = std::get<1>(key);
+    patch.normal = -map.walls[patch.wall].normal;
+    patch.station_m = camera_station_m + axis_cam.dot(patch.centroid);
+    out.push_back(patch);
+  }
+  for (const auto& [plane, m] : plates) {
+    FramePatch patch;
+    if (!reduce(m, o, patch)) continue;
+    patch.plate = true;
+    patch.wall = kTransverseSample;
+    patch.normal = axis_cam;
+    patch.station_m = camera_station_m + axis_cam.dot(patch.centroid);
+    out.push_back(patch);
+  }
+  return out;
+}
+
+}  // namespace tunnelmap

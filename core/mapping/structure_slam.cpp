@@ -1,0 +1,296 @@
+#include "core/mapping/structure_slam.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/mapping/slam_patches.h"
+
+namespace tunnelmap {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// The tunnel's axis in the world, pointing the way `forward` does.
+Eigen::Vector3d oriented(const Eigen::Vector3d& axis, const Eigen::Vector3d& forward) {
+  return axis.dot(forward) < 0 ? -axis : axis;
+}
+
+}  // namespace
+
+StructureSlam::StructureSlam(SlamOptions options) : options_(options) {}
+
+void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
+  Group g;
+  g.id = id;
+  g.odometry = pose;
+  if (groups_.empty()) {
+    g.axis = pose.linear().col(2);
+    g.up = -pose.linear().col(1);
+    graph_.poses.push_back(pose);
+    graph_.fixed.push_back(true);  // the map's frame is the first pose's
+  } else {
+    const Group& prev = groups_.back();
+    g.axis = prev.axis;
+    g.up = prev.up;
+    g.has_axis = prev.has_axis;
+    const Eigen::Isometry3d relative = prev.odometry.inverse() * pose;
+    g.station_m = prev.station_m + prev.axis.dot(pose.translation() - prev.odometry.translation());
+    graph_.poses.push_back(graph_.poses.back() * relative);
+    graph_.fixed.push_back(false);
+    const double d = relative.translation().norm();
+    GraphOdometry o;
+    o.from = static_cast<int>(groups_.size()) - 1;
+    o.to = static_cast<int>(groups_.size());
+    o.relative = relative;
+    o.world_translation = options_.odometry_in_world;
+    o.world_step = pose.translation() - prev.odometry.translation();
+    o.sigma_m = std::max(options_.odometry_m_per_sqrt_m * std::sqrt(d), options_.min_odometry_m);
+    o.sigma_rad = std::max(options_.odometry_deg_per_sqrt_m * std::sqrt(d), options_.min_odometry_deg) * kDeg;
+    graph_.odometry.push_back(o);
+  }
+  groups_.push_back(g);
+}
+
+int StructureSlam::add_plane(const Eigen::Vector3d& normal, double offset) {
+  graph_.planes.push_back({normal, offset});
+  return static_cast<int>(graph_.planes.size()) - 1;
+}
+
+int StructureSlam::plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world) {
+  // The nearest known plate along the girder, if within the gate; else a new plate.
+  int best = -1;
+  double best_gap = options_.plate_gate_m;
+  for (const auto& [station, plane] : plate_stations_) {
+    const double gap = std::abs(station - patch.station_m);
+    if (gap < best_gap) best_gap = gap, best = plane;
+  }
+  if (best >= 0) return best;
+  const Eigen::Vector3d normal = camera_to_world.linear() * patch.normal;
+  best = add_plane(normal, normal.dot(camera_to_world * patch.centroid));
+  plate_stations_.push_back({patch.station_m, best});
+  return best;
+}
+
+std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>& patches,
+                                            const Eigen::Isometry3d& camera_to_world) {
+  // The frame's pose error moves its view of a wall along the wall's normal by a shift that
+  // changes linearly along the girder (an offset and a heading error): shift(s) = a + b (s - s0).
+  struct Line {
+    double a = 0.0, b = 0.0;
+  };
+  double s0 = 0.0;
+  for (const FramePatch* p : patches) s0 += p->station_m;
+  if (!patches.empty()) s0 /= static_cast<double>(patches.size());
+  auto layers_of = [&](const FramePatch* p) -> const std::vector<int>* {
+    const auto it = wall_landmarks_.find({p->wall, p->band});
+    return it == wall_landmarks_.end() ? nullptr : &it->second;
+  };
+  auto offset_of = [&](const FramePatch* p, int plane) {
+    const GraphPlane& L = graph_.planes[static_cast<std::size_t>(plane)];
+    return L.offset - L.normal.dot(camera_to_world * p->centroid);  // the shift that lands p on it
+  };
+  auto layer_near = [&](const FramePatch* p, const Line& line) {
+    const std::vector<int>* layers = layers_of(p);
+    if (!layers) return -1;
+    const double shift = line.a + line.b * (p->station_m - s0);
+    for (int plane : *layers)
+      if (std::abs(offset_of(p, plane) - shift) <= options_.layer_tolerance_m) return plane;
+    return -1;
+  };
+  // Candidate lines: no shift, each patch-on-layer shift, and each pair of them far enough
+  // apart along the girder to give a heading.
+  struct Landing {
+    double station, shift;
+  };
+  std::vector<Landing> landings;
+  for (const FramePatch* p : patches)
+    if (const std::vector<int>* layers = layers_of(p))
+      for (int plane : *layers) {
+        const double shift = offset_of(p, plane);
+        if (std::abs(shift) <= options_.max_layer_shift_m) landings.push_back({p->station_m, shift});
+      }
+  std::vector<Line> lines = {Line{}};
+  for (std::size_t i = 0; i < landings.size(); ++i) {
+    lines.push_back({landings[i].shift, 0.0});
+    for (std::size_t j = i + 1; j < landings.size(); ++j) {
+      const double ds = landings[j].station - landings[i].station;
+      if (std::abs(ds) < 0.5) continue;
+      const double b = (landings[j].shift - landings[i].shift) / ds;
+      if (std::abs(b) <= options_.max_layer_slope) lines.push_back({landings[i].shift + b * (s0 - landings[i].station), b});
+    }
+  }
+  // The line that lands the most points on known layers; the smaller one on a tie.
+  Line best;
+  long best_points = -1;
+  for (const Line& line : lines) {
+    long points = 0;
+    for (const FramePatch* p : patches)
+      if (layer_near(p, line) >= 0) points += p->points;
+    const double size = std::abs(line.a) + std::abs(line.b);
+    if (points > best_points || (points == best_points && size < std::abs(best.a) + std::abs(best.b)))
+      best_points = points, best = line;
+  }
+  std::vector<int> planes;
+  for (const FramePatch* p : patches) {
+    int plane = layer_near(p, best);
+    if (plane < 0) {
+      const Eigen::Vector3d normal = camera_to_world.linear() * p->normal;
+      const double shift = best.a + best.b * (p->station_m - s0);
+      plane = add_plane(normal, normal.dot(camera_to_world * p->centroid) + shift);
+      wall_landmarks_[{p->wall, p->band}].push_back(plane);
+    }
+    planes.push_back(plane);
+  }
+  return planes;
+}
+
+void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {
+  Group& g = groups_.back();
+  const int pose = static_cast<int>(groups_.size()) - 1;
+  const Eigen::Isometry3d frame_to_world = graph_.poses.back() * offset;
+  const Eigen::Isometry3d frame_odometry = g.odometry * offset;
+  // The frame's view of the axis: its own detection, oriented as the walk goes.
+  Eigen::Vector3d axis_world = oriented(frame_odometry.linear() * map.axis_dir, g.axis);
+  if (!g.has_axis) {
+    g.axis = axis_world;
+    g.up = frame_odometry.linear() * map.up;
+    g.has_axis = true;
+  }
+  const Eigen::Vector3d axis_cam = frame_odometry.linear().transpose() * axis_world;
+  const double camera_station = g.station_m + g.axis.dot(frame_odometry.translation() - g.odometry.translation());
+  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_);
+  std::vector<int> planes(patches.size(), -1);
+  for (int w = 0; w < 4; ++w) {
+    std::vector<const FramePatch*> on_wall;
+    std::vector<std::size_t> index;
+    for (std::size_t k = 0; k < patches.size(); ++k)
+      if (!patches[k].plate && patches[k].wall == w) on_wall.push_back(&patches[k]), index.push_back(k);
+    const std::vector<int> layers = wall_layers(on_wall, frame_to_world);
+    for (std::size_t k = 0; k < index.size(); ++k) planes[index[k]] = layers[k];
+  }
+  for (std::size_t k = 0; k < patches.size(); ++k) {
+    const FramePatch& patch = patches[k];
+    const int plane = patch.plate ? plate_landmark(patch, frame_to_world) : planes[k];
+    PlanePatch p;
+    p.pose = pose;
+    p.plane = plane;
+    p.centroid = offset * patch.centroid;
+    p.spread = offset.linear() * patch.spread;
+    p.sigma_m = patch.sigma_m;
+    graph_.patches.push_back(p);
+    g.samples += patch.points;
+  }
+}
+
+Eigen::Isometry3d StructureSlam::add_frame(const TunnelMap& map, const FrameWalls& walls,
+                                           const Eigen::Isometry3d& pose, int group) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (groups_.empty() || groups_.back().id != group) start_group(pose, group);
+  Group& g = groups_.back();
+  const Eigen::Isometry3d offset = g.odometry.inverse() * pose;
+  g.frames.push_back(frames_++);
+  g.offsets.push_back(offset);
+  if (map.detected) {
+    add_patches(map, walls, offset);
+    solve_window();
+  }
+  last_frame_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  frames_ms_ += last_frame_ms_;
+  return graph_.poses.back() * offset;
+}
+
+// The latest `window_groups` groups move; the same number before them hold still and tie the
+// window's landmarks to the map already built.
+void StructureSlam::solve_window() {
+  const int n = static_cast<int>(groups_.size());
+  const int free_from = std::max(1, n - options_.window_groups);
+  const int from = std::max(0, free_from - options_.window_groups);
+  if (free_from >= n) return;
+  PoseGraph window;
+  std::vector<int> plane_index(graph_.planes.size(), -1), planes_used;
+  for (int g = from; g < n; ++g) {
+    window.poses.push_back(graph_.poses[static_cast<std::size_t>(g)]);
+    window.fixed.push_back(g < free_from);
+  }
+  for (const GraphOdometry& o : graph_.odometry)
+    if (o.from >= from) window.odometry.push_back({o.from - from, o.to - from, o.relative, o.sigma_m, o.sigma_rad});
+  for (const PlanePatch& p : graph_.patches) {
+    if (p.pose < from) continue;
+    int& index = plane_index[static_cast<std::size_t>(p.plane)];
+    if (index < 0) {
+      index = static_cast<int>(window.planes.size());
+      window.planes.push_back(graph_.planes[static_cast<std::size_t>(p.plane)]);
+      planes_used.push_back(p.plane);
+    }
+    PlanePatch q = p;
+    q.pose -= from;
+    q.plane = index;
+    window.patches.push_back(q);
+  }
+  PoseGraphOptions po;
+  po.max_iterations = 10;
+  const PoseGraphSolution s = solve_pose_graph(window, po);
+  for (int g = free_from; g < n; ++g) graph_.poses[static_cast<std::size_t>(g)] = s.poses[static_cast<std::size_t>(g - from)];
+  for (std::size_t k = 0; k < planes_used.size(); ++k) graph_.planes[static_cast<std::size_t>(planes_used[k])] = s.planes[k];
+}
+
+PoseCorrection StructureSlam::correction(std::size_t g) const {
+  const Group& group = groups_[g];
+  PoseCorrection c;
+  c.group = group.id;
+  c.frames = group.frames;
+  c.delta = graph_.poses[g] * group.odometry.inverse();
+  c.rotation_deg = Eigen::AngleAxisd(c.delta.linear()).angle() / kDeg;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Isometry3d& o : group.offsets) centre += (group.odometry * o).translation();
+  centre /= static_cast<double>(group.offsets.size());
+  c.translation_mm = (c.delta * centre - centre).norm() * 1000.0;
+  c.samples = group.samples;
+  return c;
+}
+
+PoseRefinement StructureSlam::finish() {
+  const auto t0 = std::chrono::steady_clock::now();
+  PoseRefinement out;
+  if (groups_.empty()) return out;
+  PoseGraphSolution s = solve_pose_graph(graph_);
+  graph_.poses = s.poses;
+  graph_.planes = s.planes;
+  out.ran = !graph_.patches.empty();
+  out.iterations = s.iterations;
+  out.poses.resize(static_cast<std::size_t>(frames_));
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const Group& group = groups_[g];
+    for (std::size_t k = 0; k < group.frames.size(); ++k)
+      out.poses[static_cast<std::size_t>(group.frames[k])] = graph_.poses[g] * group.offsets[k];
+    PoseCorrection c = correction(g);
+    // Which of the group's directions the landmarks fix, in the girder's frame there.
+    const Eigen::Vector3d centre = graph_.poses[g].translation();
+    const Eigen::Matrix<double, 6, 6> H = patch_information(graph_, s, static_cast<int>(g), centre);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(H);
+    const double top = eig.eigenvalues().maxCoeff();
+    Eigen::Matrix<double, 6, 6> null_space = Eigen::Matrix<double, 6, 6>::Zero();
+    for (int i = 0; i < 6; ++i)
+      if (!(eig.eigenvalues()[i] > options_.degenerate_ratio * top))
+        null_space += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
+    const Eigen::Vector3d axis = group.axis, up = (group.up - axis * axis.dot(group.up)).normalized();
+    const Eigen::Vector3d left = up.cross(axis);
+    const Eigen::Vector3d basis[6] = {axis, left, up, left, up, axis};
+    for (int a = 0; a < 6; ++a) {
+      Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
+      if (a < 3) e.head<3>() = basis[a];
+      else e.tail<3>() = basis[a];
+      const bool degenerate = !(top > 0) || e.dot(null_space * e) > 0.5;
+      (degenerate ? c.degenerate : c.constrained).push_back(pose_axis_name(a));
+    }
+    out.groups.push_back(c);
+  }
+  // The whole estimate's time: every frame's window and the final optimisation.
+  out.ms = frames_ms_ + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,77 @@
+#pragma once
+// Localisation and mapping against the girder's structure: one pose graph (core/solvers) over
+// the pose groups of a posed sequence, with odometry factors between consecutive groups and
+// plane landmarks for what the camera sees of the structure: each wall, one plane per band of
+// the girder's length, and each plate across it (diaphragm, step face, end wall).
+//
+// Landmarks are told apart by their position along the girder as the odometry measures it
+// (arc length of the walk): over the few metres in which one plate is seen, odometry drifts by
+// millimetres, far less than the metres between plates, so a repeated plate is never taken for
+// its neighbour. Directions no landmark constrains (along the girder between plates) are left
+// to odometry and reported as degenerate.
+//
+// Two modes share the graph: add_frame() re-estimates a window of the latest pose groups
+// (bounded time per frame, for a robot on the move), finish() optimises all of them.
+#include <Eigen/Geometry>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "core/mapping/frame_walls.h"
+#include "core/mapping/pose_refinement.h"
+#include "core/mapping/slam_options.h"
+#include "core/mapping/slam_patches.h"
+#include "core/solvers/pose_graph.h"
+#include "core/tunnel/tunnel_map.h"
+
+namespace tunnelmap {
+
+class StructureSlam {
+ public:
+  explicit StructureSlam(SlamOptions options = SlamOptions());
+
+  // Frames in order. `pose`: its odometry / forward-kinematics camera-to-world pose; `group`:
+  // its pose group (a group's frames share one correction). Returns the frame's pose as now
+  // estimated (after the window's optimisation).
+  Eigen::Isometry3d add_frame(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& pose,
+                              int group);
+  // Optimises every pose group and landmark; the corrections and the refined pose per frame.
+  PoseRefinement finish();
+
+  double last_frame_ms() const { return last_frame_ms_; }  // add_frame's time, window included
+  int plate_landmarks() const { return static_cast<int>(plate_stations_.size()); }
+  int landmarks() const { return static_cast<int>(graph_.planes.size()); }
+
+ private:
+  struct Group {
+    int id = 0;
+    Eigen::Isometry3d odometry = Eigen::Isometry3d::Identity();  // its first frame's pose as given
+    std::vector<int> frames;
+    std::vector<Eigen::Isometry3d> offsets;  // per frame: odometry^-1 * frame's pose
+    double station_m = 0.0;                  // along the walk (odometry)
+    Eigen::Vector3d axis = Eigen::Vector3d::UnitZ(), up = Eigen::Vector3d::UnitY();  // world
+    bool has_axis = false;
+    int samples = 0;
+  };
+
+  void start_group(const Eigen::Isometry3d& pose, int id);
+  void add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset);
+  int plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world);
+  // The layers (zones) of wall landmarks that one wall's patches of a frame land on: the shift
+  // along the wall's normal that lands most of them on known layers (the frame's own pose
+  // error), then each patch on the layer within reach or on a new one. Per patch, its plane.
+  std::vector<int> wall_layers(const std::vector<const FramePatch*>& patches, const Eigen::Isometry3d& camera_to_world);
+  int add_plane(const Eigen::Vector3d& normal, double offset);
+  void solve_window();
+  PoseCorrection correction(std::size_t g) const;
+
+  SlamOptions options_;
+  std::vector<Group> groups_;
+  PoseGraph graph_;  // poses = groups' current estimates (their first frame's camera)
+  std::map<std::pair<int, long>, std::vector<int>> wall_landmarks_;  // (wall, band) -> layers
+  std::vector<std::pair<double, int>> plate_stations_;    // (station, plane) of each plate
+  int frames_ = 0;
+  double frames_ms_ = 0.0, last_frame_ms_ = 0.0;
+};
+
+}  // namespace tunnelmap

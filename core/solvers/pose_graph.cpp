@@ -1,0 +1,167 @@
+#include "core/solvers/pose_graph.h"
+
+#include <ceres/ceres.h>
+
+#include <memory>
+
+namespace tunnelmap {
+
+namespace {
+
+// Parameter blocks: a pose as an Eigen quaternion (x, y, z, w) and a translation; a plane as a
+// unit normal and an offset.
+struct PoseBlock {
+  double q[4];
+  double t[3];
+};
+struct PlaneBlock {
+  double n[3];
+  double d[1];
+};
+
+PoseBlock to_block(const Eigen::Isometry3d& T) {
+  const Eigen::Quaterniond q(T.linear());
+  return {{q.x(), q.y(), q.z(), q.w()}, {T.translation().x(), T.translation().y(), T.translation().z()}};
+}
+
+Eigen::Isometry3d from_block(const PoseBlock& b) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::Quaterniond(b.q[3], b.q[0], b.q[1], b.q[2]).normalized().toRotationMatrix();
+  T.translation() = Eigen::Vector3d(b.t[0], b.t[1], b.t[2]);
+  return T;
+}
+
+// The measured relative pose against the estimated one: rotation error (twice the error
+// quaternion's vector part, radians) and translation error, in the `from` pose's frame.
+struct OdometryResidual {
+  Eigen::Quaterniond q_measured;
+  Eigen::Vector3d t_measured;
+  double inv_sigma_m, inv_sigma_rad;
+  bool world_translation;  // t_measured is tb - ta in the world frame
+
+  template <typename T>
+  bool operator()(const T* qa, const T* ta, const T* qb, const T* tb, T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> Qa(qa), Qb(qb);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Ta(ta), Tb(tb);
+    const Eigen::Quaternion<T> qa_inv = Qa.conjugate();
+    const Eigen::Quaternion<T> q_ab = qa_inv * Qb;
+    const Eigen::Matrix<T, 3, 1> t_ab = world_translation ? Eigen::Matrix<T, 3, 1>(Tb - Ta) : Eigen::Matrix<T, 3, 1>(qa_inv * (Tb - Ta));
+    const Eigen::Quaternion<T> dq = q_measured.template cast<T>().conjugate() * q_ab;
+    const T sign = dq.w() < T(0) ? T(-1) : T(1);  // q and -q are one rotation
+    for (int k = 0; k < 3; ++k) {
+      residual[k] = T(2.0 * inv_sigma_rad) * sign * dq.vec()[k];
+      residual[3 + k] = T(inv_sigma_m) * (t_ab[k] - T(t_measured[k]));
+    }
+    return true;
+  }
+};
+
+// A patch against its plane: the centroid's distance from the plane, and the tilt of the plane
+// against the patch (the plane's normal in the pose's frame through the patch's spread).
+struct PatchResidual {
+  Eigen::Vector3d centroid;
+  Eigen::Matrix3d spread;
+  double inv_sigma;
+
+  template <typename T>
+  bool operator()(const T* q, const T* t, const T* n, const T* d, T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> Q(q);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Tt(t), N(n);
+    const Eigen::Matrix<T, 3, 1> x = Q * centroid.cast<T>() + Tt;
+    residual[0] = T(inv_sigma) * (N.dot(x) - d[0]);
+    const Eigen::Matrix<T, 3, 1> n_local = Q.conjugate() * N;
+    const Eigen::Matrix<T, 3, 1> tilt = spread.transpose().cast<T>() * n_local;
+    for (int k = 0; k < 3; ++k) residual[1 + k] = T(inv_sigma) * tilt[k];
+    return true;
+  }
+};
+
+void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<PoseBlock>& poses) {
+  PoseBlock& a = poses[static_cast<std::size_t>(o.from)];
+  PoseBlock& b = poses[static_cast<std::size_t>(o.to)];
+  const Eigen::Vector3d t = o.world_translation ? o.world_step : o.relative.translation();
+  auto* cost = new ceres::AutoDiffCostFunction<OdometryResidual, 6, 4, 3, 4, 3>(new OdometryResidual{
+      Eigen::Quaterniond(o.relative.linear()), t, 1.0 / o.sigma_m, 1.0 / o.sigma_rad, o.world_translation});
+  problem.AddResidualBlock(cost, nullptr, a.q, a.t, b.q, b.t);
+}
+
+void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigmas,
+               std::vector<PoseBlock>& poses, std::vector<PlaneBlock>& planes) {
+  auto* cost = new ceres::AutoDiffCostFunction<PatchResidual, 4, 4, 3, 3, 1>(
+      new PatchResidual{p.centroid, p.spread, 1.0 / p.sigma_m});
+  PoseBlock& pose = poses[static_cast<std::size_t>(p.pose)];
+  PlaneBlock& plane = planes[static_cast<std::size_t>(p.plane)];
+  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, plane.n, plane.d);
+}
+
+}  // namespace
+
+PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOptions& options) {
+  std::vector<PoseBlock> poses;
+  for (const Eigen::Isometry3d& T : graph.poses) poses.push_back(to_block(T));
+  std::vector<PlaneBlock> planes;
+  for (const GraphPlane& p : graph.planes) planes.push_back({{p.normal.x(), p.normal.y(), p.normal.z()}, {p.offset}});
+
+  ceres::Problem problem;
+  for (const GraphOdometry& o : graph.odometry) add_odometry(problem, o, poses);
+  for (const PlanePatch& p : graph.patches) add_patch(problem, p, options.robust_sigmas, poses, planes);
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    if (!problem.HasParameterBlock(poses[i].q)) continue;
+    problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);
+    if (i < graph.fixed.size() && graph.fixed[i]) {
+      problem.SetParameterBlockConstant(poses[i].q);
+      problem.SetParameterBlockConstant(poses[i].t);
+    }
+  }
+  for (PlaneBlock& p : planes)
+    if (problem.HasParameterBlock(p.n)) problem.SetManifold(p.n, new ceres::SphereManifold<3>);
+
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  so.max_num_iterations = options.max_iterations;
+  so.num_threads = options.threads;
+  so.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+
+  PoseGraphSolution out;
+  for (const PoseBlock& b : poses) out.poses.push_back(from_block(b));
+  for (const PlaneBlock& p : planes) out.planes.push_back({Eigen::Vector3d(p.n[0], p.n[1], p.n[2]).normalized(), p.d[0]});
+  out.converged = summary.termination_type == ceres::CONVERGENCE;
+  out.iterations = static_cast<int>(summary.iterations.size());
+  out.initial_cost = summary.initial_cost;
+  out.final_cost = summary.final_cost;
+  return out;
+}
+
+Eigen::Matrix<double, 6, 6> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
+                                              int pose, const Eigen::Vector3d& centre) {
+  Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
+  const Eigen::Isometry3d& T = solution.poses[static_cast<std::size_t>(pose)];
+  // A plane only this pose sees is free to follow it: it says nothing about the pose.
+  std::vector<int> first_seen_by(graph.planes.size(), -1);
+  std::vector<bool> shared(graph.planes.size(), false);
+  for (const PlanePatch& p : graph.patches) {
+    int& first = first_seen_by[static_cast<std::size_t>(p.plane)];
+    if (first < 0) first = p.pose;
+    else if (first != p.pose) shared[static_cast<std::size_t>(p.plane)] = true;
+  }
+  for (const PlanePatch& p : graph.patches) {
+    if (p.pose != pose || !shared[static_cast<std::size_t>(p.plane)]) continue;
+    const Eigen::Vector3d n = solution.planes[static_cast<std::size_t>(p.plane)].normal;
+    // Each point x = m + e contributes J = [(x - c) x n; n]; summed over the patch's points
+    // this is the centroid's J plus the spread's rotation part (the e's sum to zero).
+    Eigen::Matrix<double, 6, 1> J;
+    J.head<3>() = (T * p.centroid - centre).cross(n);
+    J.tail<3>() = n;
+    Eigen::Matrix<double, 6, 3> S = Eigen::Matrix<double, 6, 3>::Zero();
+    Eigen::Matrix3d n_cross;
+    n_cross << 0, -n.z(), n.y(), n.z(), 0, -n.x(), -n.y(), n.x(), 0;
+    S.topRows<3>() = n_cross * (T.linear() * p.spread);
+    const double w = 1.0 / (p.sigma_m * p.sigma_m);
+    H += w * (J * J.transpose() + S * S.transpose());
+  }
+  return H;
+}
+
+}  // namespace tunnelmap

@@ -1,0 +1,67 @@
+#pragma once
+// A pose graph with plane landmarks, solved by robust least squares (Ceres): camera poses linked
+// by odometry factors, and planes (n . x = d, world frame) that the poses observe as patches of
+// points. A patch enters by its moments (weight, centroid, spread), which gives exactly the sum
+// of its points' squared distances to the plane at the cost of one residual block. Generic: it
+// knows nothing of tunnels (core/mapping/structure_slam.h builds the graph of a girder).
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace tunnelmap {
+
+struct GraphOdometry {
+  int from = 0, to = 0;
+  Eigen::Isometry3d relative = Eigen::Isometry3d::Identity();  // pose_from^-1 * pose_to, measured
+  double sigma_m = 0.01, sigma_rad = 0.003;                   // its uncertainty per axis
+  // Where the position error of the odometry lives: false, in the `from` pose's frame (a
+  // heading error then carries the step sideways); true, in the world frame, apart from the
+  // heading (position and heading drift as two random walks): `world_step` = to - from.
+  bool world_translation = false;
+  Eigen::Vector3d world_step = Eigen::Vector3d::Zero();
+};
+
+struct GraphPlane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit
+  double offset = 0.0;                                // n . x = offset (world)
+};
+
+// Points of one plane seen from one pose, in that pose's frame: their centroid and the square
+// root of their scatter about it (scatter = spread * spread^T, per point, i.e. a covariance).
+struct PlanePatch {
+  int pose = 0, plane = 0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  double sigma_m = 0.002;  // uncertainty of the centroid's distance to the plane
+};
+
+struct PoseGraph {
+  std::vector<Eigen::Isometry3d> poses;  // initial values
+  std::vector<bool> fixed;               // per pose: held at its initial value
+  std::vector<GraphOdometry> odometry;
+  std::vector<GraphPlane> planes;        // initial values
+  std::vector<PlanePatch> patches;
+};
+
+struct PoseGraphOptions {
+  double robust_sigmas = 2.0;  // patch residuals beyond this many sigmas weigh less (Huber)
+  int max_iterations = 50;
+  int threads = 1;
+};
+
+struct PoseGraphSolution {
+  std::vector<Eigen::Isometry3d> poses;
+  std::vector<GraphPlane> planes;
+  bool converged = false;
+  int iterations = 0;
+  double initial_cost = 0.0, final_cost = 0.0;
+};
+
+PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOptions& options = {});
+
+// The information the patches of `pose` give about a small motion of it (rotation about
+// `centre`, then translation; world frame, [rotation; translation]), at the solution's planes.
+// Patches of planes no other pose sees are left out: such a plane follows the pose.
+Eigen::Matrix<double, 6, 6> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
+                                              int pose, const Eigen::Vector3d& centre);
+
+}  // namespace tunnelmap
