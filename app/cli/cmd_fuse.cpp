@@ -176,7 +176,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
                                        r.merged.map.reason + ")");
     // The map follows the sections (the same map as `map --ply`), in the world frame.
     if (!r.stations.section_maps.empty())
-      write_sectioned_map_ply(o.map_path, r.stations.section_maps, pj);
+      write_sectioned_map_ply(o.map_path, r.stations.section_maps, pj, plate_outlines(r.stations));
     else
       write_map_ply(o.map_path, r.merged.map, pj);
   }

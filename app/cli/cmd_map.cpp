@@ -143,7 +143,7 @@ void write_report(const MapOptions& o, const StationMap& m, const nlohmann::json
   const std::string png = (tmp / "map.png").string();
   std::string why;
   if (!m.section_maps.empty()) {
-    if (o.ply_path.empty()) write_sectioned_map_ply(ply, m.section_maps, params);
+    if (o.ply_path.empty()) write_sectioned_map_ply(ply, m.section_maps, params, plate_outlines(m));
     if (render_map_image(ply, png, why)) in.map_image_png = png;
   } else {
     why = "the map has no section";
@@ -202,7 +202,7 @@ void run(const MapOptions& o, CliContext& ctx) {
     write_file_atomically(o.csv_path, [&](std::ostream& out) { out << station_map_csv(m); });
   if (!o.diaphragms_csv_path.empty())
     write_file_atomically(o.diaphragms_csv_path, [&](std::ostream& out) { out << diaphragms_csv(m.girder); });
-  if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj);
+  if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj, plate_outlines(m));
 #ifdef TUNNELMAP_HAVE_REPORT
   if (!o.report_path.empty()) write_report(o, m, pj);
 #endif

@@ -53,7 +53,7 @@ MapMesh station_map_mesh(const RenderOptions& opt, StationMap* summary) {
   *summary = m;
   TempFolder tmp;
   const std::string ply = tmp.file("map.ply");
-  write_sectioned_map_ply(ply, m.section_maps, pipeline.params().to_json());
+  write_sectioned_map_ply(ply, m.section_maps, pipeline.params().to_json(), plate_outlines(m));
   return load_map_mesh(ply);
 }
 

@@ -24,6 +24,8 @@ namespace {
 constexpr ply::Rgb kForbiddenColour{255, 140, 0};
 constexpr ply::Rgb kTraversableColour{220, 30, 30};
 constexpr ply::Rgb kBoundaryColour{30, 60, 230};
+constexpr ply::Rgb kPlateColour{150, 155, 165};
+constexpr int kTransverseWall = 4;  // the face's `wall`: across the tunnel
 
 struct Vertex {
   Eigen::Vector3f p;
@@ -47,6 +49,15 @@ struct MeshBuilder {
     const auto w = static_cast<std::uint8_t>(wall);
     faces.push_back({{base, base + 1, base + 2}, l, w});
     faces.push_back({{base, base + 2, base + 3}, l, w});
+  }
+
+  void plate(const PlateOutline& outline) {
+    const PlateMesh m = triangulate_plate(outline);
+    const auto base = static_cast<std::int32_t>(vertices.size());
+    for (const Eigen::Vector3d& p : m.vertices) vertices.push_back({(to_world * p).cast<float>(), kPlateColour});
+    for (const auto& t : m.triangles)
+      faces.push_back({{base + t[0], base + t[1], base + t[2]}, static_cast<std::uint8_t>(MapFaceLabel::Plate),
+                       static_cast<std::uint8_t>(kTransverseWall)});
   }
 
   // Border band of width `band` inside the rectangle `b`: one quad per edge, from the edge to
@@ -83,8 +94,8 @@ std::string one_line(std::string s) {
   return s;
 }
 
-std::string header(const std::vector<const TunnelMap*>& maps, const nlohmann::json& params,
-                   std::size_t nv, std::size_t nf) {
+std::string header(const std::vector<const TunnelMap*>& maps, std::size_t plates,
+                   const nlohmann::json& params, std::size_t nv, std::size_t nf) {
   std::ostringstream h;
   h.imbue(std::locale::classic());
   h << "ply\nformat binary_little_endian 1.0\n";
@@ -99,6 +110,7 @@ std::string header(const std::vector<const TunnelMap*>& maps, const nlohmann::js
       h << "comment section " << i << " " << number_text(maps[i]->width_m) << " "
         << number_text(maps[i]->height_m) << "\n";
   }
+  if (plates > 0) h << "comment plates " << plates << "\n";
   if (params.is_object())
     for (const auto& [key, value] : params.items())
       h << "comment param " << one_line(key) << " "
@@ -117,7 +129,8 @@ std::string header(const std::vector<const TunnelMap*>& maps, const nlohmann::js
 namespace {
 
 void write_maps(const std::string& path, const std::vector<const TunnelMap*>& maps,
-                const nlohmann::json& params_json, const Eigen::Isometry3d& to_world) {
+                const std::vector<PlateOutline>& plates, const nlohmann::json& params_json,
+                const Eigen::Isometry3d& to_world) {
   MeshBuilder mesh{{}, {}, to_world};
   for (const TunnelMap* map : maps)
     for (int w = 0; w < 4; ++w) {
@@ -130,9 +143,10 @@ void write_maps(const std::string& path, const std::vector<const TunnelMap*>& ma
       }
       mesh.border(wall.boundary, kMapBorderBandM, w);
     }
+  for (const PlateOutline& p : plates) mesh.plate(p);
 
   write_file_atomically(path, [&](std::ostream& out) {
-    out << header(maps, params_json, mesh.vertices.size(), mesh.faces.size());
+    out << header(maps, plates.size(), params_json, mesh.vertices.size(), mesh.faces.size());
     for (const Vertex& v : mesh.vertices) {
       for (int k = 0; k < 3; ++k) ply::put_f32(out, v.p[k]);
       ply::put_u8(out, v.c.r);
@@ -152,15 +166,15 @@ void write_maps(const std::string& path, const std::vector<const TunnelMap*>& ma
 
 void write_map_ply(const std::string& path, const TunnelMap& map, const nlohmann::json& params_json,
                    const Eigen::Isometry3d& to_world) {
-  write_maps(path, {&map}, params_json, to_world);
+  write_maps(path, {&map}, {}, params_json, to_world);
 }
 
 void write_sectioned_map_ply(const std::string& path, const std::vector<TunnelMap>& sections,
-                             const nlohmann::json& params_json) {
+                             const nlohmann::json& params_json, const std::vector<PlateOutline>& plates) {
   std::vector<const TunnelMap*> maps;
   for (const TunnelMap& m : sections) maps.push_back(&m);
   if (maps.empty()) throw InputError(path, "the map has no section to write");
-  write_maps(path, maps, params_json, Eigen::Isometry3d::Identity());
+  write_maps(path, maps, plates, params_json, Eigen::Isometry3d::Identity());
 }
 
 }  // namespace tunnelmap

@@ -5,12 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "core/export/plate_mesh.h"
 #include "core/tunnel/tunnel_map.h"
 
 namespace tunnelmap {
 
 // Face labels of the map mesh (uchar `label` face property).
-enum class MapFaceLabel : unsigned char { Boundary = 0, Traversable = 1, Forbidden = 2 };
+// Plate: a plate across the tunnel (a diaphragm with its manhole cut out; wall 4).
+enum class MapFaceLabel : unsigned char { Boundary = 0, Traversable = 1, Forbidden = 2, Plate = 3 };
 
 // Width of the blue border band drawn inside each wall's boundary rectangle.
 constexpr double kMapBorderBandM = 0.01;
@@ -25,9 +27,10 @@ void write_map_ply(const std::string& path, const TunnelMap& map, const nlohmann
                    const Eigen::Isometry3d& to_world = Eigen::Isometry3d::Identity());
 
 // The map of a tunnel whose cross-section changes: one swept rectangle per section (each map's
-// walls and zones, already in the world frame), in one mesh. The header gives the section count
-// and each section's width and height ("comment section <i> <width_m> <height_m>").
+// walls and zones, already in the world frame), in one mesh, and the plates across it with their
+// openings (grey, label Plate). The header gives the section count and each section's width and
+// height ("comment section <i> <width_m> <height_m>") and the plate count ("comment plates <n>").
 void write_sectioned_map_ply(const std::string& path, const std::vector<TunnelMap>& sections,
-                             const nlohmann::json& params_json);
+                             const nlohmann::json& params_json, const std::vector<PlateOutline>& plates = {});
 
 }  // namespace tunnelmap

@@ -112,6 +112,37 @@ void expect_words_inside_margins(const std::string& pdf) {
     FAIL() << "pdftotext/pdftoppm/pdfinfo not found: install poppler-utils (scripts/install-deps.sh)"; \
   }
 
+TEST(InspectionReport, ListsEachDiaphragmWithItsManholeOrWhyItHasNone) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_plates");
+  StationMap map = test::make_report_station_map();
+  Diaphragm open;
+  open.station_m = 4.012;
+  open.seen_by_frames = 9;
+  Manhole m;
+  m.width_m = 0.452;
+  m.height_m = 0.748;
+  m.shape = "rounded_rectangle";
+  m.corner_radius_m = 0.08;
+  m.clearance_m[0] = 0.21;
+  m.clearance_m[1] = 0.17;
+  m.clearance_m[3] = 0.262;
+  open.manhole = m;
+  Diaphragm closed;
+  closed.station_m = 8.034;
+  closed.seen_by_frames = 3;
+  closed.manhole_reason = "the rim was seen on 4 of 8 sides";
+  map.girder.diaphragms = {open, closed};
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, write_fake_map_png(dir)));
+  const std::string text = pdf_text(pdf);
+  EXPECT_NE(text.find("Diaphragms and manholes"), std::string::npos);
+  for (const char* value : {"4.012", "0.452", "0.748", "0.262", "0.170", "rounded rectangle (r 0.080)", "8.034",
+                            "the rim was seen on 4 of 8"})  // the reason wraps in its column
+    EXPECT_NE(text.find(value), std::string::npos) << value;
+  expect_words_inside_margins(pdf);
+}
+
 TEST(InspectionReport, HoldsSectionsOutOfToleranceStationsAndRescanPose) {
   REQUIRE_POPPLER();
   const std::string dir = fresh_dir("tunnelmap_report");

@@ -11,6 +11,7 @@
 #include "core/util/error.h"
 #include "ui/report/report_document.h"
 #include "ui/report/report_image.h"
+#include "ui/report/report_diaphragms.h"
 #include "ui/report/report_lists.h"
 #include "ui/report/report_overview.h"
 #include "ui/report/report_plan.h"
@@ -46,6 +47,7 @@ void build(report::Document& doc, const InspectionReportInput& in) {
     add_profile_plot(doc, m, Dimension::Height);
   }
   add_sections_table(doc, m);
+  add_diaphragms_table(doc, m);
   add_out_of_tolerance_table(doc, m);
   add_rescan_table(doc, m);
   add_map_image(doc, in.map_image_png, in.map_image_note);

@@ -17,6 +17,7 @@ const QColor kSectionFill[2] = {QColor(205, 222, 240), QColor(228, 236, 245)};
 const QColor kOutline(55, 55, 55);
 const QColor kJoint(30, 30, 30);
 const QColor kPose(80, 80, 80);
+const QColor kPlate(120, 128, 140);
 
 // Distance of the left and right walls from the centre line at a station (NaN when unseen).
 // Prefers the measured wall positions; otherwise splits the width around the centre line.
@@ -128,6 +129,24 @@ void add_plan(Document& doc, const StationMap& map) {
       p.drawPath(path);
     }
 
+    // Diaphragms: a thick line across the section at each plate, open where its manhole is.
+    const double plate_pen = mm(0.7);
+    p.setPen(QPen(kPlate, plate_pen, Qt::SolidLine, Qt::FlatCap));
+    for (const Diaphragm& d : m->girder.diaphragms) {
+      double width = widest;
+      for (const Section& s : m->sections)
+        if (d.station_m >= s.from_m && d.station_m <= s.to_m) width = s.width_m;
+      const double px = x.at(d.station_m);
+      if (!d.manhole) {
+        p.drawLine(QPointF(px, lateral(0.5 * width)), QPointF(px, lateral(-0.5 * width)));
+        continue;
+      }
+      const double gap_left = d.manhole->lateral_m + 0.5 * d.manhole->width_m;
+      const double gap_right = d.manhole->lateral_m - 0.5 * d.manhole->width_m;
+      p.drawLine(QPointF(px, lateral(0.5 * width)), QPointF(px, lateral(std::min(gap_left, 0.5 * width))));
+      p.drawLine(QPointF(px, lateral(std::max(gap_right, -0.5 * width))), QPointF(px, lateral(-0.5 * width)));
+    }
+
     // Side names, left of the drawing.
     p.setFont(small);
     p.setPen(colours::kMuted);
@@ -205,6 +224,7 @@ void add_plan(Document& doc, const StationMap& map) {
     const std::vector<LegendItem> items = {
         {Mark::Swatch, kOutline, QStringLiteral("section"), kSectionFill[0]},
         {Mark::DashedLine, kJoint, QStringLiteral("joint (section change)")},
+        {Mark::Line, kPlate, QStringLiteral("diaphragm")},
         {Mark::Line, kOutline, QStringLiteral("walls")},
         {Mark::TriangleUp, colours::kAlert, QStringLiteral("out of tolerance")},
         {Mark::Dot, kPose, QStringLiteral("pose camera")},

@@ -33,7 +33,8 @@ class GirderWalk : public ::testing::Test {
                                " --walk 0.4,8.2,12 --walk-pose 0,0.5,0");
     ASSERT_EQ(sim.exit_code, 0) << sim.err;
     map = run_cli("map " + dir->file("walk") + " --params " + kFieldPreset + " --json " +
-                  dir->file("map.json") + " --diaphragms-csv " + dir->file("plates.csv"));
+                  dir->file("map.json") + " --diaphragms-csv " + dir->file("plates.csv") + " --ply " +
+                  dir->file("map.ply"));
     ASSERT_EQ(map.exit_code, 0) << map.err;
     doc = nlohmann::json::parse(slurp(dir->file("map.json")));
     dataset = nlohmann::json::parse(slurp(dir->file("walk/dataset.json")));
@@ -116,6 +117,12 @@ TEST_F(GirderWalk, TheDiaphragmCsvHasARowPerPlate) {
   const std::string csv = slurp(dir->file("plates.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // header + 3 plates
   EXPECT_NE(csv.find("ellipse"), std::string::npos);
+}
+
+TEST_F(GirderWalk, ThePlyMapHoldsEachPlateWithItsOpening) {
+  const std::string ply = slurp(dir->file("map.ply"));
+  const std::string head = ply.substr(0, ply.find("end_header"));
+  EXPECT_NE(head.find("comment plates 3\n"), std::string::npos) << head;
 }
 
 }  // namespace

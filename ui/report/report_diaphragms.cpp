@@ -1,0 +1,61 @@
+#include "ui/report/report_diaphragms.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/report/report_format.h"
+#include "ui/report/report_table.h"
+
+namespace tunnelmap::report {
+
+namespace {
+
+Column num(const QString& title, double weight = 1.0) { return {title, weight, Qt::AlignRight}; }
+
+// The narrowest clearance from the opening to a wall, "-" when no wall was measured (the sill's
+// height above the floor is clearance_m[3]).
+QString least_clearance(const Manhole& m) {
+  double least = NAN;
+  for (double c : m.clearance_m)
+    if (std::isfinite(c)) least = std::isfinite(least) ? std::min(least, c) : c;
+  return fixed(least, 3);
+}
+
+Row plate_row(std::size_t i, const Diaphragm& d) {
+  Row r;
+  r.cells << QStringLiteral("D%1").arg(i + 1) << fixed(d.station_m, 3) << QString::number(d.seen_by_frames);
+  if (!d.manhole) {
+    r.cells << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-")
+            << QString::fromStdString(d.manhole_reason);
+    return r;
+  }
+  const Manhole& m = *d.manhole;
+  const QString shape = m.shape == "rounded_rectangle" ? QStringLiteral("rounded rectangle (r %1)").arg(fixed(m.corner_radius_m, 3))
+                                                       : QString::fromStdString(m.shape);
+  r.cells << metres(m.width_m) << metres(m.height_m) << fixed(m.clearance_m[3], 3) << least_clearance(m) << shape;
+  return r;
+}
+
+}  // namespace
+
+void add_diaphragms_table(Document& doc, const StationMap& m) {
+  doc.add_heading(QStringLiteral("Diaphragms and manholes"));
+  const std::vector<Diaphragm>& plates = m.girder.diaphragms;
+  if (plates.empty()) {
+    doc.add_paragraph(QStringLiteral("none: no plate across the girder was seen"), doc.font(9.0), colours::kMuted);
+    return;
+  }
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < plates.size(); ++i) rows.push_back(plate_row(i, plates[i]));
+  const std::vector<Column> cols = {{QStringLiteral("Plate"), 0.6, Qt::AlignLeft},
+                                    num(QStringLiteral("Station (m)")),
+                                    num(QStringLiteral("Frames"), 0.9),
+                                    num(QStringLiteral("Manhole width (m)"), 1.2),
+                                    num(QStringLiteral("Manhole height (m)"), 1.2),
+                                    num(QStringLiteral("Sill above floor (m)"), 1.2),
+                                    num(QStringLiteral("Least clearance (m)"), 1.2),
+                                    {QStringLiteral("Shape, or why not measured"), 2.6, Qt::AlignLeft, true}};
+  add_table(doc, cols, rows);
+}
+
+}  // namespace tunnelmap::report
