@@ -1,19 +1,49 @@
 #include "core/engine/frame_context.h"
 
+#include "core/fusion/fusion_options.h"
+#include "core/mapping/frame_walls.h"
 #include "core/mapping/map_options.h"
 
 namespace tunnelmap {
 
-FrameContext::FrameContext(const Parameters& params)
-    : tunnel_(tunnel_options(params)), stations_(station_map_options(params), tunnel_) {}
+namespace {
 
-void FrameContext::apply(int index, FrameResult& result, const std::optional<Eigen::Isometry3d>& pose) {
+constexpr double kGroupTurnDeg = 5.0;  // as group_poses groups a whole sequence
+
+}  // namespace
+
+FrameContext::FrameContext(const Parameters& params)
+    : tunnel_(tunnel_options(params)),
+      stations_(station_map_options(params), tunnel_),
+      pose_group_m_(fusion_options(params).pose_group_m) {
+  const SlamOptions slam = slam_options(params);
+  if (slam.localise) slam_.emplace(slam);
+}
+
+std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& result,
+                                                     const std::optional<Eigen::Isometry3d>& pose) {
   if (pose) {
-    stations_.add_frame(index, result, *pose);
-    return;
+    const Eigen::Isometry3d mapped_with = slam_ ? localise(result, *pose) : *pose;
+    stations_.add_frame(index, result, mapped_with);
+    return mapped_with;
   }
   apply_tunnel_context(result.map, tunnel_, recent_);
   if (result.map.detected) recent_.accept(result.map);
+  return pose;
+}
+
+// The frame's pose group (a new one when the given pose moved or turned past the grouping
+// limits from the group's first), then its pose as the structure so far places it.
+Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isometry3d& pose) {
+  const Eigen::Isometry3d d = group_first_.inverse() * pose;
+  const double turn_deg = Eigen::AngleAxisd(d.linear()).angle() * 180.0 / M_PI;
+  if (group_ < 0 || d.translation().norm() > pose_group_m_ || turn_deg > kGroupTurnDeg) {
+    ++group_;
+    group_first_ = pose;
+  }
+  FrameWalls walls;
+  if (result.map.detected) extract_frame_walls(result, walls);
+  return slam_->add_frame(result.map, walls, pose, group_);
 }
 
 }  // namespace tunnelmap

@@ -43,13 +43,13 @@ RunEngine::RunEngine(RunSettings settings, const FrameSource* input, ContextRule
       runner_(make_method_runner(input_or_none(input), settings_)),
       context_(settings_.params) {}
 
-void RunEngine::run_next(int index, const DepthFrame& frame, FrameResult& result) {
+void RunEngine::run_next(int index, DepthFrame& frame, FrameResult& result) {
   if (rule_ == ContextRule::Sequence && runner_.method() == Method::Qhull) {
     runner_.run(frame, result, &context_.recent());
     return;
   }
   runner_.run(frame, result, nullptr);
-  if (rule_ == ContextRule::Sequence) context_.apply(index, result, frame.pose);
+  if (rule_ == ContextRule::Sequence) frame.pose = context_.apply(index, result, frame.pose);
 }
 
 SequenceStats RunEngine::run(const FrameSource& source, const Deliver& deliver, const Progress& progress) {
@@ -64,7 +64,9 @@ SequenceStats RunEngine::run(const FrameSource& source, const Deliver& deliver, 
     // the context in frame order, so the output equals a serial run.
     work = [runner = runner_](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
     if (rule_ == ContextRule::Sequence)
-      in_order = [this](SequenceFrame& f) { context_.apply(static_cast<int>(f.index), f.result, f.frame.pose); };
+      in_order = [this](SequenceFrame& f) {
+        f.frame.pose = context_.apply(static_cast<int>(f.index), f.result, f.frame.pose);
+      };
   }
   return run_loop(source, std::move(work), std::move(in_order), settings_, deliver, progress, &cancelled_);
 }

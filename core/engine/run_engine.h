@@ -33,7 +33,8 @@ class RunEngine {
   SequenceStats run(const FrameSource& source, const Deliver& deliver, const Progress& progress = {});
 
   // One frame that arrives on its own (a live camera), in order: detection, then the context.
-  void run_next(int index, const DepthFrame& frame, FrameResult& result);
+  // With slam.localise the frame's pose becomes the one localisation gave it.
+  void run_next(int index, DepthFrame& frame, FrameResult& result);
 
   // From any thread: run() stops after the frame being delivered. Reset when run() starts.
   void cancel() { cancelled_.store(true); }

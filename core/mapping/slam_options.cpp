@@ -13,7 +13,7 @@ bool operator==(const SlamOptions& a, const SlamOptions& b) {
          a.min_odometry_m == b.min_odometry_m && a.min_odometry_deg == b.min_odometry_deg &&
          a.min_patch_points == b.min_patch_points && a.layer_tolerance_m == b.layer_tolerance_m &&
          a.max_layer_shift_m == b.max_layer_shift_m && a.max_layer_slope == b.max_layer_slope &&
-         a.degenerate_ratio == b.degenerate_ratio;
+         a.degenerate_ratio == b.degenerate_ratio && a.localise == b.localise;
 }
 
 SlamOptions slam_options(const Parameters& p) {
@@ -28,6 +28,7 @@ SlamOptions slam_options(const Parameters& p) {
   o.point_sigma_m = mm_to_m(p.get(slam_keys::point_sigma_mm));
   o.patch_floor_m = mm_to_m(p.get(slam_keys::patch_floor_mm));
   o.window_groups = p.get(slam_keys::window_groups);
+  o.localise = p.get(slam_keys::localise);
   return o;
 }
 
@@ -35,7 +36,7 @@ ParameterGroup slam_parameter_group() {
   using namespace slam_keys;
   return {{odometry_mm_per_sqrt_m.spec(), odometry_deg_per_sqrt_m.spec(), odometry_in_world.spec(), band_m.spec(), max_wall_depth_m.spec(),
            max_plate_depth_m.spec(), plate_gate_m.spec(), point_sigma_mm.spec(), patch_floor_mm.spec(),
-           window_groups.spec()},
+           window_groups.spec(), localise.spec()},
           {}};
 }
 

@@ -40,6 +40,11 @@ inline constexpr ParameterKey<double> patch_floor_mm{
     "slam.patch_floor_mm", "mm", 1.0, 0.01, 100.0, 0.01, Stage::Map, "Patch floor",
     "Smallest uncertainty of a patch's position, however many points it has (calibration, "
     "quantisation)"};
+inline constexpr ParameterKey<bool> localise{
+    "slam.localise", "", false, 0, 1, 1, Stage::Map, "Localise while running",
+    "1: while a posed sequence runs (detect, the GUI, a live camera) each frame is localised "
+    "against the structure mapped so far and takes its context with that pose; 0: frames keep "
+    "their given poses (map and fuse still optimise them)"};
 inline constexpr ParameterKey<int> window_groups{
     "slam.window_groups", "poses", 12, 2, 1000, 1, Stage::Map, "Window",
     "Pose groups re-estimated after each new frame while the sequence runs (the batch "
@@ -57,6 +62,7 @@ struct SlamOptions {
   double point_sigma_m = mm_to_m(slam_keys::point_sigma_mm.default_value);
   double patch_floor_m = mm_to_m(slam_keys::patch_floor_mm.default_value);
   int window_groups = slam_keys::window_groups.default_value;
+  bool localise = slam_keys::localise.default_value;
   // Odometry of pose groups that did not move still has this much uncertainty.
   double min_odometry_m = 0.0005;
   double min_odometry_deg = 0.01;

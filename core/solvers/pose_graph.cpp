@@ -119,6 +119,11 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
   so.max_num_iterations = options.max_iterations;
+  // Converge on the cost's minimum, not on a relative decrease the first steps already meet:
+  // the poses then do not depend on the path the solver took (compiler, optimisation level).
+  so.function_tolerance = 1e-10;
+  so.gradient_tolerance = 1e-12;
+  so.parameter_tolerance = 1e-10;
   so.num_threads = options.threads;
   so.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;

@@ -130,7 +130,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m", "map.per_frame_sizes",
       "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m",
       "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
-      "slam.patch_floor_mm", "slam.window_groups",
+      "slam.patch_floor_mm", "slam.window_groups", "slam.localise",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",
       "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.pose_group_mm", "ransac.iterations",
       "ransac.sample_step", "ransac.distance_mm", "ransac.max_planes", "ransac.min_plane_points",
