@@ -31,8 +31,9 @@ inline constexpr ParameterKey<double> max_plate_depth_m{
     "quantised too coarsely)"};
 inline constexpr ParameterKey<double> plate_gate_m{
     "slam.plate_gate_m", "m", 0.3, 0.02, 2.0, 0.01, Stage::Map, "Plate gate",
-    "A plate seen within this distance along the girder of a known plate is that plate; keep it "
-    "well below half the diaphragm spacing"};
+    "Farthest a plate may lie along the girder from a known plate and be that plate; nearer, the "
+    "reach is four standard deviations of the odometry's drift since that plate was last seen "
+    "(at least 5 cm). Keep it well below half the diaphragm spacing"};
 inline constexpr ParameterKey<double> point_sigma_mm{
     "slam.point_sigma_mm", "mm", 1.5, 0.05, 100.0, 0.05, Stage::Map, "Depth noise at 1 m",
     "Standard deviation of one depth point at 1 m; it grows with the square of the depth"};

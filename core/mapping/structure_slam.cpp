@@ -12,6 +12,7 @@ namespace tunnelmap {
 namespace {
 
 constexpr double kDeg = M_PI / 180.0;
+constexpr double kMinPlateReachM = 0.05;  // plates nearer than this along the girder are one
 
 // The tunnel's axis in the world, pointing the way `forward` does.
 Eigen::Vector3d oriented(const Eigen::Vector3d& axis, const Eigen::Vector3d& forward) {
@@ -59,19 +60,27 @@ int StructureSlam::add_plane(const Eigen::Vector3d& normal, double offset) {
   return static_cast<int>(graph_.planes.size()) - 1;
 }
 
-int StructureSlam::plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world) {
-  // The nearest known plate along the girder, if within the gate; else a new plate.
-  int best = -1;
+int StructureSlam::plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world,
+                                  double camera_station_m) {
+  // The nearest known plate along the girder within reach of the odometry's drift since that
+  // plate was last seen (four standard deviations, at least 5 cm, at most the gate); else a
+  // new plate. Two plates a few decimetres apart then stay two.
+  KnownPlate* best = nullptr;
   double best_gap = options_.plate_gate_m;
-  for (const auto& [station, plane] : plate_stations_) {
-    const double gap = std::abs(station - patch.station_m);
-    if (gap < best_gap) best_gap = gap, best = plane;
+  for (KnownPlate& k : plates_) {
+    const double walked = std::abs(camera_station_m - k.seen_from_m);
+    const double reach = std::clamp(4.0 * options_.odometry_m_per_sqrt_m * std::sqrt(walked), kMinPlateReachM,
+                                    options_.plate_gate_m);
+    const double gap = std::abs(k.station_m - patch.station_m);
+    if (gap <= reach && gap < best_gap) best_gap = gap, best = &k;
   }
-  if (best >= 0) return best;
-  const Eigen::Vector3d normal = camera_to_world.linear() * patch.normal;
-  best = add_plane(normal, normal.dot(camera_to_world * patch.centroid));
-  plate_stations_.push_back({patch.station_m, best});
-  return best;
+  if (!best) {
+    const Eigen::Vector3d normal = camera_to_world.linear() * patch.normal;
+    plates_.push_back({patch.station_m, camera_station_m, add_plane(normal, normal.dot(camera_to_world * patch.centroid))});
+    return plates_.back().plane;
+  }
+  best->seen_from_m = camera_station_m;
+  return best->plane;
 }
 
 std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>& patches,
@@ -173,7 +182,7 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   }
   for (std::size_t k = 0; k < patches.size(); ++k) {
     const FramePatch& patch = patches[k];
-    const int plane = patch.plate ? plate_landmark(patch, frame_to_world) : planes[k];
+    const int plane = patch.plate ? plate_landmark(patch, frame_to_world, camera_station) : planes[k];
     PlanePatch p;
     p.pose = pose;
     p.plane = plane;

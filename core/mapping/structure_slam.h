@@ -39,7 +39,7 @@ class StructureSlam {
   PoseRefinement finish();
 
   double last_frame_ms() const { return last_frame_ms_; }  // add_frame's time, window included
-  int plate_landmarks() const { return static_cast<int>(plate_stations_.size()); }
+  int plate_landmarks() const { return static_cast<int>(plates_.size()); }
   int landmarks() const { return static_cast<int>(graph_.planes.size()); }
 
  private:
@@ -56,7 +56,7 @@ class StructureSlam {
 
   void start_group(const Eigen::Isometry3d& pose, int id);
   void add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset);
-  int plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world);
+  int plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world, double camera_station_m);
   // The layers (zones) of wall landmarks that one wall's patches of a frame land on: the shift
   // along the wall's normal that lands most of them on known layers (the frame's own pose
   // error), then each patch on the layer within reach or on a new one. Per patch, its plane.
@@ -69,7 +69,12 @@ class StructureSlam {
   std::vector<Group> groups_;
   PoseGraph graph_;  // poses = groups' current estimates (their first frame's camera)
   std::map<std::pair<int, long>, std::vector<int>> wall_landmarks_;  // (wall, band) -> layers
-  std::vector<std::pair<double, int>> plate_stations_;    // (station, plane) of each plate
+  struct KnownPlate {
+    double station_m;    // along the walk (odometry), where it was first seen
+    double seen_from_m;  // the camera's station when it was last seen
+    int plane;
+  };
+  std::vector<KnownPlate> plates_;
   int frames_ = 0;
   double frames_ms_ = 0.0, last_frame_ms_ = 0.0;
 };

@@ -5,6 +5,7 @@
 #include <zstd.h>
 
 #include <cstring>
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -14,6 +15,23 @@ namespace {
 // Chunks are at most a few hundred MB; a larger claim is a corrupt header, not a real chunk,
 // and must not become a giant allocation.
 constexpr std::uint64_t kMaxChunkBytes = 1ull << 32;
+// Nor may a claim exceed what the compressed bytes could hold: real chunks of depth images
+// compress a few fold, all-zero frames a few thousand fold. Up to 256 MiB any claim is taken.
+constexpr std::uint64_t kAlwaysPlausibleBytes = 256ull << 20;
+constexpr std::uint64_t kMaxCompressionRatio = 4096;
+
+// Checked before anything is allocated.
+void check_claim(const std::string& compression, std::size_t size, std::uint64_t uncompressed_size) {
+  if (uncompressed_size > kMaxChunkBytes)
+    throw std::runtime_error("chunk claims " + std::to_string(uncompressed_size) + " bytes");
+  if (compression.empty() || compression == "none") {
+    if (size != uncompressed_size) throw std::runtime_error("uncompressed chunk size mismatch");
+    return;
+  }
+  if (uncompressed_size > kAlwaysPlausibleBytes && uncompressed_size / std::max<std::size_t>(size, 1) > kMaxCompressionRatio)
+    throw std::runtime_error("chunk claims " + std::to_string(uncompressed_size) + " bytes from " +
+                             std::to_string(size) + " compressed");
+}
 
 void zstd_decompress(const std::uint8_t* data, std::size_t size, std::vector<std::uint8_t>& out) {
   const std::size_t n = ZSTD_decompress(out.data(), out.size(), data, size);
@@ -53,11 +71,9 @@ void bz2_decompress(const std::uint8_t* data, std::size_t size, std::vector<std:
 
 void decompress_chunk(const std::string& compression, const std::uint8_t* data, std::size_t size,
                       std::uint64_t uncompressed_size, std::vector<std::uint8_t>& out) {
-  if (uncompressed_size > kMaxChunkBytes)
-    throw std::runtime_error("chunk claims " + std::to_string(uncompressed_size) + " bytes");
+  check_claim(compression, size, uncompressed_size);
   out.resize(static_cast<std::size_t>(uncompressed_size));
   if (compression.empty() || compression == "none") {
-    if (size != uncompressed_size) throw std::runtime_error("uncompressed chunk size mismatch");
     if (size) std::memcpy(out.data(), data, size);
   } else if (compression == "zstd") {
     zstd_decompress(data, size, out);
