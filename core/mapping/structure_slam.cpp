@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/mapping/slam_patches.h"
 
@@ -219,24 +220,33 @@ void StructureSlam::solve_window() {
   const int from = std::max(0, free_from - options_.window_groups);
   if (free_from >= n) return;
   PoseGraph window;
-  std::vector<int> plane_index(graph_.planes.size(), -1), planes_used;
+  std::unordered_map<int, int> plane_index;  // graph plane -> window plane
+  std::vector<int> planes_used;
   for (int g = from; g < n; ++g) {
     window.poses.push_back(graph_.poses[static_cast<std::size_t>(g)]);
     window.fixed.push_back(g < free_from);
   }
-  for (const GraphOdometry& o : graph_.odometry)
-    if (o.from >= from) window.odometry.push_back({o.from - from, o.to - from, o.relative, o.sigma_m, o.sigma_rad});
-  for (const PlanePatch& p : graph_.patches) {
-    if (p.pose < from) continue;
-    int& index = plane_index[static_cast<std::size_t>(p.plane)];
-    if (index < 0) {
-      index = static_cast<int>(window.planes.size());
-      window.planes.push_back(graph_.planes[static_cast<std::size_t>(p.plane)]);
-      planes_used.push_back(p.plane);
+  // Odometry and patches are stored in pose order: the window's are the tail of each, so the
+  // time per frame does not grow with the sequence.
+  const auto first_odometry = std::lower_bound(graph_.odometry.begin(), graph_.odometry.end(), from,
+                                               [](const GraphOdometry& o, int pose) { return o.from < pose; });
+  for (auto it = first_odometry; it != graph_.odometry.end(); ++it) {
+    GraphOdometry o = *it;
+    o.from -= from;
+    o.to -= from;
+    window.odometry.push_back(o);
+  }
+  const auto first_patch = std::lower_bound(graph_.patches.begin(), graph_.patches.end(), from,
+                                            [](const PlanePatch& p, int pose) { return p.pose < pose; });
+  for (auto it = first_patch; it != graph_.patches.end(); ++it) {
+    const auto [entry, added] = plane_index.try_emplace(it->plane, static_cast<int>(window.planes.size()));
+    if (added) {
+      window.planes.push_back(graph_.planes[static_cast<std::size_t>(it->plane)]);
+      planes_used.push_back(it->plane);
     }
-    PlanePatch q = p;
+    PlanePatch q = *it;
     q.pose -= from;
-    q.plane = index;
+    q.plane = entry->second;
     window.patches.push_back(q);
   }
   PoseGraphOptions po;
