@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/ply_mesh_reader.h"
+#include "core/recordings/recording.h"
 #include "core/util/error.h"
 #include "ui/depth_view_widget.h"
 #include "ui/fused_scene.h"
@@ -34,6 +35,7 @@
 #include "ui/mesh_layer.h"
 #include "ui/message_log.h"
 #include "ui/parameter_panel.h"
+#include "ui/recording_opener.h"
 #include "ui/results_panel.h"
 #include "ui/timeline_widget.h"
 #include "ui/view3d_widget.h"
@@ -116,6 +118,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   statusBar()->addPermanentWidget(progress_);
   statusBar()->addPermanentWidget(cancel_button_);
   connect(cancel_button_, &QPushButton::clicked, this, &MainWindow::cancel_sequence);
+  connect_recording_opener();
   // Errors: one line in the status bar, all of them in the Messages dock (never a dialog).
   messages_ = new MessageLog(this);
   messages_dock_ = new QDockWidget(tr("Messages"), this);
@@ -241,6 +244,20 @@ bool MainWindow::open_input(const QString& path) {
     show_error(QString::fromStdString(e.what()));
     return false;
   }
+  adopt_input(path, source);
+  return true;
+}
+
+bool MainWindow::open_interactively(const QString& path) {
+  if (!recordings::is_recording_path(path.toStdString())) return open_input(path);
+  if (!recordings_->open(path, read_options_for(path))) {
+    show_error(tr("%1: another recording is still being opened").arg(path));
+    return false;
+  }
+  return true;
+}
+
+void MainWindow::adopt_input(const QString& path, std::shared_ptr<const FrameSource> source) {
   cancel_.store(true);
   if (live_->running()) stop_live_view();
   leave_fused_view();
@@ -264,7 +281,6 @@ bool MainWindow::open_input(const QString& path) {
   QSettings().setValue("files/lastFolder", QFileInfo(path).absolutePath());
   status_label_->setText(tr("Opened %1 (%2 frame(s))").arg(path).arg(source_->size()));
   request_run(true);
-  return true;
 }
 
 void MainWindow::request_run(bool immediate) {
@@ -393,7 +409,7 @@ void MainWindow::rebuild_recent_menu() {
   if (!recent_menu_) return;
   recent_menu_->clear();
   for (const QString& p : QSettings().value("files/recent").toStringList())
-    recent_menu_->addAction(p, this, [this, p] { open_input(p); });
+    recent_menu_->addAction(p, this, [this, p] { open_interactively(p); });
   recent_menu_->setEnabled(!recent_menu_->isEmpty());
 }
 
@@ -413,7 +429,7 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* e) {
 
 void MainWindow::dropEvent(QDropEvent* e) {
   const auto urls = e->mimeData()->urls();
-  if (!urls.isEmpty() && urls.first().isLocalFile()) open_input(urls.first().toLocalFile());
+  if (!urls.isEmpty() && urls.first().isLocalFile()) open_interactively(urls.first().toLocalFile());
 }
 
 }  // namespace tunnelmap::ui

@@ -35,6 +35,7 @@ namespace tunnelmap::ui {
 class CrossSectionPanel;
 class DepthViewWidget;
 class ProfilePlot;
+class RecordingOpener;
 struct ReviewMap;
 class LiveView;
 class MessageLog;
@@ -51,7 +52,12 @@ class MainWindow : public QMainWindow {
   ~MainWindow() override;
 
   // All return false and show the error (status bar + Messages dock) on failure.
-  bool open_input(const QString& path);
+  bool open_input(const QString& path);  // recordings with the topics the CLI would choose
+  // File > Open, Open recording, drag and drop, recent files: a recording is indexed, its
+  // topics chosen in a dialog and its frames read on a worker, with progress and Cancel
+  // (true: started; the input changes when it is done).
+  bool open_interactively(const QString& path);
+  RecordingOpener* recording_opener() const { return recordings_; }
   // Shows frame `index` (0-based) of the open input on the timeline, results table, plot and 3D
   // view at once; false if out of range. Every one of them calls this when clicked.
   bool select_frame(int index);
@@ -152,6 +158,8 @@ class MainWindow : public QMainWindow {
 
  private:
   void build_menus();
+  void connect_recording_opener();  // progress, Cancel and the result in the status bar
+  void adopt_input(const QString& path, std::shared_ptr<const FrameSource> source);
   void build_navigation(QWidget* views, QWidget* results);  // keys over the views and results
   void update_plot_reference();  // ground truth of the dataset, else the design
   void update_preset_status();   // title and status bar: input, preset, "(modified)"
@@ -206,6 +214,7 @@ class MainWindow : public QMainWindow {
   PipelineRunner runner_;
   QTimer debounce_;
   std::shared_ptr<const FrameSource> source_;
+  RecordingOpener* recordings_ = nullptr;
   QString input_path_;
   int frame_index_ = 0;
   bool reset_camera_ = true;

@@ -2,6 +2,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
 #include <QMenuBar>
@@ -17,15 +18,21 @@ namespace tunnelmap::ui {
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open…"), this, [this] {
-    const QString path = ask_open_path(tr("Open depth PNG, PCD, OpenNI recording or dataset.json"),
-                                       tr("Inputs (*.png *.pcd *.oni *.json);;All files (*)"));
-    if (!path.isEmpty()) open_input(path);
+    const QString path = ask_open_path(tr("Open depth PNG, PCD, recording or dataset.json"),
+                                       tr("Inputs (*.png *.pcd *.oni *.bag *.mcap *.db3 *.json);;All files (*)"));
+    if (!path.isEmpty()) open_interactively(path);
   }, QKeySequence::Open)->setObjectName("open");
+  file->addAction(tr("Open r&ecording…"), this, [this] {
+    const QString path = ask_open_path(tr("Open robot recording (ROS bag)"),
+                                       tr("Recordings (*.bag *.mcap *.db3 metadata.yaml);;All files (*)"));
+    // A rosbag2 folder is chosen by its metadata.yaml.
+    if (!path.isEmpty()) open_interactively(QFileInfo(path).fileName() == "metadata.yaml" ? QFileInfo(path).path() : path);
+  })->setObjectName("openRecording");
   file->addAction(tr("Open &folder…"), this, [this] {
     QSettings s;
     const QString dir = QFileDialog::getExistingDirectory(this, tr("Open dataset folder"),
                                                           s.value("files/lastFolder").toString());
-    if (!dir.isEmpty()) open_input(dir);
+    if (!dir.isEmpty()) open_interactively(dir);
   });
   file->addAction(tr("Open &mesh…"), this, [this] {
     const QString path = ask_open_path(tr("Open mesh PLY"), tr("PLY (*.ply)"));

@@ -34,10 +34,11 @@ void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
     graph_.poses.push_back(pose);
     graph_.fixed.push_back(true);  // the map's frame is the first pose's
   } else {
+    // The previous group's axis until this group's first detection gives its own: stations
+    // then follow a curving girder as arc length along the walk.
     const Group& prev = groups_.back();
     g.axis = prev.axis;
     g.up = prev.up;
-    g.has_axis = prev.has_axis;
     const Eigen::Isometry3d relative = prev.odometry.inverse() * pose;
     g.station_m = prev.station_m + prev.axis.dot(pose.translation() - prev.odometry.translation());
     graph_.poses.push_back(graph_.poses.back() * relative);
@@ -54,6 +55,12 @@ void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
     graph_.odometry.push_back(o);
   }
   groups_.push_back(g);
+}
+
+std::vector<double> StructureSlam::group_stations_m() const {
+  std::vector<double> stations;
+  for (const Group& g : groups_) stations.push_back(g.station_m);
+  return stations;
 }
 
 int StructureSlam::add_plane(const Eigen::Vector3d& normal, double offset) {
@@ -281,35 +288,41 @@ PoseRefinement StructureSlam::finish() {
   out.ran = !graph_.patches.empty();
   out.iterations = s.iterations;
   out.poses.resize(static_cast<std::size_t>(frames_));
+  std::vector<Eigen::Vector3d> centres;
+  for (const Eigen::Isometry3d& T : graph_.poses) centres.push_back(T.translation());
+  const std::vector<PoseInformation> information = patch_information(graph_, s, centres);
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     const Group& group = groups_[g];
     for (std::size_t k = 0; k < group.frames.size(); ++k)
       out.poses[static_cast<std::size_t>(group.frames[k])] = graph_.poses[g] * group.offsets[k];
     PoseCorrection c = correction(g);
-    // Which of the group's directions the landmarks fix, in the girder's frame there.
-    const Eigen::Vector3d centre = graph_.poses[g].translation();
-    const Eigen::Matrix<double, 6, 6> H = patch_information(graph_, s, static_cast<int>(g), centre);
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(H);
-    const double top = eig.eigenvalues().maxCoeff();
-    Eigen::Matrix<double, 6, 6> null_space = Eigen::Matrix<double, 6, 6>::Zero();
-    for (int i = 0; i < 6; ++i)
-      if (!(eig.eigenvalues()[i] > options_.degenerate_ratio * top))
-        null_space += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
-    const Eigen::Vector3d axis = group.axis, up = (group.up - axis * axis.dot(group.up)).normalized();
-    const Eigen::Vector3d left = up.cross(axis);
-    const Eigen::Vector3d basis[6] = {axis, left, up, left, up, axis};
-    for (int a = 0; a < 6; ++a) {
-      Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
-      if (a < 3) e.head<3>() = basis[a];
-      else e.tail<3>() = basis[a];
-      const bool degenerate = !(top > 0) || e.dot(null_space * e) > 0.5;
-      (degenerate ? c.degenerate : c.constrained).push_back(pose_axis_name(a));
-    }
+    split_by_information(information[g], group, c);
     out.groups.push_back(c);
   }
   // The whole estimate's time: every frame's window and the final optimisation.
   out.ms = frames_ms_ + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return out;
+}
+
+// Which of the group's directions the landmarks fix, in the girder's frame there: those with
+// information above `degenerate_ratio` of the strongest.
+void StructureSlam::split_by_information(const PoseInformation& H, const Group& group, PoseCorrection& c) const {
+  const Eigen::SelfAdjointEigenSolver<PoseInformation> eig(H);
+  const double top = eig.eigenvalues().maxCoeff();
+  PoseInformation null_space = PoseInformation::Zero();
+  for (int i = 0; i < 6; ++i)
+    if (!(eig.eigenvalues()[i] > options_.degenerate_ratio * top))
+      null_space += eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
+  const Eigen::Vector3d axis = group.axis, up = (group.up - axis * axis.dot(group.up)).normalized();
+  const Eigen::Vector3d left = up.cross(axis);
+  const Eigen::Vector3d basis[6] = {axis, left, up, left, up, axis};
+  for (int a = 0; a < 6; ++a) {
+    Eigen::Matrix<double, 6, 1> e = Eigen::Matrix<double, 6, 1>::Zero();
+    if (a < 3) e.head<3>() = basis[a];
+    else e.tail<3>() = basis[a];
+    const bool degenerate = !(top > 0) || e.dot(null_space * e) > 0.5;
+    (degenerate ? c.degenerate : c.constrained).push_back(pose_axis_name(a));
+  }
 }
 
 }  // namespace tunnelmap

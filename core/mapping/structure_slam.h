@@ -38,6 +38,9 @@ class StructureSlam {
   // Optimises every pose group and landmark; the corrections and the refined pose per frame.
   PoseRefinement finish();
 
+  // Each pose group's station: arc length of the walk as the odometry gives it, along each
+  // group's own view of the girder's axis (so it follows a curving girder).
+  std::vector<double> group_stations_m() const;
   double last_frame_ms() const { return last_frame_ms_; }  // add_frame's time, window included
   int plate_landmarks() const { return static_cast<int>(plates_.size()); }
   int landmarks() const { return static_cast<int>(graph_.planes.size()); }
@@ -55,6 +58,7 @@ class StructureSlam {
   };
 
   void start_group(const Eigen::Isometry3d& pose, int id);
+  void split_by_information(const PoseInformation& H, const Group& group, PoseCorrection& c) const;
   void add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset);
   int plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world, double camera_station_m);
   // The layers (zones) of wall landmarks that one wall's patches of a frame land on: the shift

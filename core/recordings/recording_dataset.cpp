@@ -144,11 +144,16 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
 
 std::unique_ptr<FrameSource> open_recording_input(const std::string& path, const ReadOptions& opt) {
   const std::unique_ptr<Recording> rec = open_recording(path);
-  const RecordingFrames frames(*rec, opt.recording, opt);
+  return extract_recording(*rec, path, opt);
+}
+
+std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::string& path, const ReadOptions& opt,
+                                               const std::function<void(std::size_t)>& progress) {
+  const RecordingFrames frames(rec, opt.recording, opt);
   const fs::path dir = make_temp_folder();
   try {
     const Eigen::Vector3d up = opt.world_up ? opt.world_up->normalized() : Eigen::Vector3d::UnitZ();
-    const RecordingExport ex = write_recording_dataset(frames, path, dir, up);
+    const RecordingExport ex = write_recording_dataset(frames, path, dir, up, progress);
     if (opt.note && ex.depth_out_of_range)
       opt.note(path + ": " + std::to_string(ex.depth_out_of_range) + " depth pixels beyond 65.535 m read as no measurement");
     Dataset ds = read_dataset(dir.string());

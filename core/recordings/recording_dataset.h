@@ -30,4 +30,10 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
 // source) and reads that. The chosen topics go to opt.note.
 std::unique_ptr<FrameSource> open_recording_input(const std::string& path, const ReadOptions& opt);
 
+// The same for a recording already open (the GUI indexes it once, then lets the user choose
+// the topics). `progress` gets the number of frames written so far; an exception it throws
+// (a cancel) leaves nothing behind and propagates.
+std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::string& path, const ReadOptions& opt,
+                                               const std::function<void(std::size_t)>& progress = {});
+
 }  // namespace tunnelmap::recordings

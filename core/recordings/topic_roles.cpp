@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <sstream>
 
 #include "core/recordings/byte_cursor.h"
 #include "core/recordings/ros_messages.h"
@@ -138,6 +139,16 @@ std::string suggested_command(const std::string& path, const TopicChoice& c) {
   if (!c.camera_info.empty()) s += " --camera-info-topic " + c.camera_info;
   if (!c.pose.empty()) s += " --pose-topic " + c.pose;
   return s;
+}
+
+std::string suggested_command(const std::string& path, const TopicChoice& choice, const RecordingOptions& opt) {
+  std::ostringstream s;
+  s << suggested_command(path, choice);
+  if (!opt.world_frame.empty()) s << " --world-frame " << opt.world_frame;
+  if (opt.start_s) s << " --start " << *opt.start_s;
+  if (opt.duration_s) s << " --duration " << *opt.duration_s;
+  if (opt.every > 1) s << " --every " << opt.every;
+  return s.str();
 }
 
 }  // namespace tunnelmap::recordings

@@ -33,5 +33,8 @@ TopicChoice choose_topics(const Recording& rec, const std::map<std::string, Topi
 
 // "tunnelmap-cli detect BAG --depth-topic ... [--color-topic ...] ...": what `topics` suggests.
 std::string suggested_command(const std::string& path, const TopicChoice& choice);
+// The same with the world frame and the time window of `opt` (--world-frame, --start,
+// --duration, --every) when they are set.
+std::string suggested_command(const std::string& path, const TopicChoice& choice, const RecordingOptions& opt);
 
 }  // namespace tunnelmap::recordings

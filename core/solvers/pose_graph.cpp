@@ -94,6 +94,33 @@ void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigma
   problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, plane.n, plane.d);
 }
 
+// A plane only one pose sees is free to follow it: it says nothing about the pose.
+std::vector<bool> planes_seen_by_two_poses(const PoseGraph& graph) {
+  std::vector<int> first_seen_by(graph.planes.size(), -1);
+  std::vector<bool> shared(graph.planes.size(), false);
+  for (const PlanePatch& p : graph.patches) {
+    int& first = first_seen_by[static_cast<std::size_t>(p.plane)];
+    if (first < 0) first = p.pose;
+    else if (first != p.pose) shared[static_cast<std::size_t>(p.plane)] = true;
+  }
+  return shared;
+}
+
+// Each point x = m + e contributes J = [(x - c) x n; n]; summed over the patch's points this is
+// the centroid's J plus the spread's rotation part (the e's sum to zero).
+PoseInformation patch_contribution(const PlanePatch& p, const Eigen::Isometry3d& T, const Eigen::Vector3d& n,
+                                   const Eigen::Vector3d& centre) {
+  Eigen::Matrix<double, 6, 1> J;
+  J.head<3>() = (T * p.centroid - centre).cross(n);
+  J.tail<3>() = n;
+  Eigen::Matrix<double, 6, 3> S = Eigen::Matrix<double, 6, 3>::Zero();
+  Eigen::Matrix3d n_cross;
+  n_cross << 0, -n.z(), n.y(), n.z(), 0, -n.x(), -n.y(), n.x(), 0;
+  S.topRows<3>() = n_cross * (T.linear() * p.spread);
+  const double w = 1.0 / (p.sigma_m * p.sigma_m);
+  return w * (J * J.transpose() + S * S.transpose());
+}
+
 }  // namespace
 
 PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOptions& options) {
@@ -139,34 +166,23 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
   return out;
 }
 
-Eigen::Matrix<double, 6, 6> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
-                                              int pose, const Eigen::Vector3d& centre) {
-  Eigen::Matrix<double, 6, 6> H = Eigen::Matrix<double, 6, 6>::Zero();
-  const Eigen::Isometry3d& T = solution.poses[static_cast<std::size_t>(pose)];
-  // A plane only this pose sees is free to follow it: it says nothing about the pose.
-  std::vector<int> first_seen_by(graph.planes.size(), -1);
-  std::vector<bool> shared(graph.planes.size(), false);
+std::vector<PoseInformation> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
+                                               const std::vector<Eigen::Vector3d>& centres) {
+  std::vector<PoseInformation> H(centres.size(), PoseInformation::Zero());
+  const std::vector<bool> shared = planes_seen_by_two_poses(graph);
   for (const PlanePatch& p : graph.patches) {
-    int& first = first_seen_by[static_cast<std::size_t>(p.plane)];
-    if (first < 0) first = p.pose;
-    else if (first != p.pose) shared[static_cast<std::size_t>(p.plane)] = true;
-  }
-  for (const PlanePatch& p : graph.patches) {
-    if (p.pose != pose || !shared[static_cast<std::size_t>(p.plane)]) continue;
-    const Eigen::Vector3d n = solution.planes[static_cast<std::size_t>(p.plane)].normal;
-    // Each point x = m + e contributes J = [(x - c) x n; n]; summed over the patch's points
-    // this is the centroid's J plus the spread's rotation part (the e's sum to zero).
-    Eigen::Matrix<double, 6, 1> J;
-    J.head<3>() = (T * p.centroid - centre).cross(n);
-    J.tail<3>() = n;
-    Eigen::Matrix<double, 6, 3> S = Eigen::Matrix<double, 6, 3>::Zero();
-    Eigen::Matrix3d n_cross;
-    n_cross << 0, -n.z(), n.y(), n.z(), 0, -n.x(), -n.y(), n.x(), 0;
-    S.topRows<3>() = n_cross * (T.linear() * p.spread);
-    const double w = 1.0 / (p.sigma_m * p.sigma_m);
-    H += w * (J * J.transpose() + S * S.transpose());
+    const auto pose = static_cast<std::size_t>(p.pose);
+    if (pose >= centres.size() || !shared[static_cast<std::size_t>(p.plane)]) continue;
+    H[pose] += patch_contribution(p, solution.poses[pose], solution.planes[static_cast<std::size_t>(p.plane)].normal,
+                                  centres[pose]);
   }
   return H;
+}
+
+PoseInformation patch_information(const PoseGraph& graph, const PoseGraphSolution& solution, int pose,
+                                  const Eigen::Vector3d& centre) {
+  std::vector<Eigen::Vector3d> centres(static_cast<std::size_t>(pose) + 1, centre);
+  return patch_information(graph, solution, centres)[static_cast<std::size_t>(pose)];
 }
 
 }  // namespace tunnelmap

@@ -61,7 +61,11 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
 // The information the patches of `pose` give about a small motion of it (rotation about
 // `centre`, then translation; world frame, [rotation; translation]), at the solution's planes.
 // Patches of planes no other pose sees are left out: such a plane follows the pose.
-Eigen::Matrix<double, 6, 6> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
-                                              int pose, const Eigen::Vector3d& centre);
+using PoseInformation = Eigen::Matrix<double, 6, 6>;
+PoseInformation patch_information(const PoseGraph& graph, const PoseGraphSolution& solution, int pose,
+                                  const Eigen::Vector3d& centre);
+// The same for every pose at once (centres[i] for pose i), in one pass over the patches.
+std::vector<PoseInformation> patch_information(const PoseGraph& graph, const PoseGraphSolution& solution,
+                                               const std::vector<Eigen::Vector3d>& centres);
 
 }  // namespace tunnelmap

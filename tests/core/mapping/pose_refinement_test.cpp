@@ -159,6 +159,27 @@ TEST(PoseRefinement, RecoversAGroupsPoseErrorFromFourWallsAndAPlate) {
   }
 }
 
+TEST(PoseRefinement, StationsAreArcLengthAlongACurvingWalk) {
+  // A walk along a horizontal curve of 30 m radius (0.67 rad over 20 m): each frame sees the
+  // girder straight ahead of it. Measured along the first frame's axis, the last station would
+  // be R sin(0.67) = 18.5 m; along the walk it is 20 m.
+  const bool all[4] = {true, true, true, true};
+  const double radius = 30.0, step = 0.5;
+  StructureSlam slam;
+  std::vector<double> arc;
+  for (int g = 0; g <= 40; ++g) {
+    const double s = step * g, heading = s / radius;
+    Eigen::Isometry3d T = camera_at(radius * std::sin(heading), radius * (1.0 - std::cos(heading)), 0.6);
+    T.linear() = Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()).toRotationMatrix() * T.linear();
+    const SyntheticFrame f = observe(camera_at(0.0, 0.0, 0.6), 0.5, 1.5, all);
+    slam.add_frame(f.map, f.walls, T, g);
+    arc.push_back(s);
+  }
+  const std::vector<double> stations = slam.group_stations_m();
+  ASSERT_EQ(stations.size(), arc.size());
+  for (std::size_t g = 0; g < arc.size(); ++g) EXPECT_NEAR(stations[g], arc[g], 0.005) << g;
+}
+
 TEST(PoseRefinement, TwoParallelWallsLeaveTheirDegenerateDirectionsAlone) {
   // Only the side walls: the pitch and the height (and, without a plate, the position along
   // the axis) are not constrained; they keep the given value and are reported.
