@@ -7,19 +7,13 @@
 
 #include "core/solvers/outline_fit.h"
 #include "core/mapping/station_map.h"
+#include "core/util/median.h"
 
 namespace tunnelmap {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double weighted_station(const PlateView& v) {
   double s = 0, w = 0;
@@ -84,7 +78,7 @@ void walls_near(const StationMap& map, double s, double half, double out[4]) {
     std::vector<double> v;
     for (const Station* st : stations_near(map, s, half))
       if (!std::isnan(st->wall_m[c])) v.push_back(st->wall_m[c]);
-    out[c] = median(v);
+    out[c] = median_of_measured(v);
   }
 }
 
@@ -156,7 +150,7 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
       for (std::size_t i = 0; i < v->samples.size(); ++i) stations.push_back(v->samples[i].x());
     }
     Diaphragm d;
-    d.station_m = median(stations);
+    d.station_m = median_of_measured(stations);
     d.area_m2 = plate_area(group, o.cell_m);
     const Section* sec = section_at(map, d.station_m);
     const double box = sec && std::isfinite(sec->width_m) && std::isfinite(sec->height_m)
@@ -201,8 +195,8 @@ std::vector<Compartment> find_compartments(const StationMap& map, const std::vec
       if (mh) h.push_back(st.height_m);
       measured += (mw || mh) ? 1 : 0;
     }
-    c.width_m = median(w);
-    c.height_m = median(h);
+    c.width_m = median_of_measured(w);
+    c.height_m = median_of_measured(h);
     c.stations_measured = measured;
     out.push_back(c);
   }

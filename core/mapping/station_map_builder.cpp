@@ -8,23 +8,18 @@
 #include <unordered_map>
 
 #include "core/mapping/frame_walls.h"
+#include "core/mapping/section_evidence.h"
 #include "core/mapping/station_sections.h"
 #include "core/tunnel/tunnel_detector.h"
 #include "core/tunnel/wall_geometry.h"
 #include "core/tunnel/zone_clustering.h"
+#include "core/util/median.h"
 
 namespace tunnelmap {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Outward directions of the four walls (left, right, top, bottom) in the world frame.
 void outward(const Eigen::Vector3d& axis, const Eigen::Vector3d& up, Eigen::Vector3d out[4]) {
@@ -152,7 +147,7 @@ std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pie
   }
   if (options_.max_symmetric_step_m <= 0) return out;
   double step[4];
-  for (int c = 0; c < 4; ++c) step[c] = median(steps[c]);
+  for (int c = 0; c < 4; ++c) step[c] = median_of_measured(steps[c]);
   const int opposite[4] = {1, 0, 3, 2};
   for (std::size_t k = 0; k < out.size(); ++k)
     for (int c = 0; c < 4; ++c) {
@@ -300,14 +295,14 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
     std::vector<double> v;
     for (const WallProfile& w : mine)
       if (!std::isnan(w.wall_m[c])) v.push_back(w.wall_m[c]);
-    return median(v);
+    return median_of_measured(v);
   };
   // Median of `value(k)` over the frame's stations, else over the nearest stations with one.
   const auto from_map = [&](const auto& value, bool expand) {
     std::vector<double> values;
     for (int k = f0; k <= f1; ++k)
       if (const WallProfile* w = at(k); w && !std::isnan(value(*w))) values.push_back(value(*w));
-    if (!expand) return median(values);
+    if (!expand) return median_of_measured(values);
     if (values.empty() && (k0 > pieces_.begin()->first || k1 < pieces_.rbegin()->first)) {
       k0 = pieces_.begin()->first;
       k1 = pieces_.rbegin()->first;
@@ -316,7 +311,7 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
     for (int d = 1; values.empty() && d <= k1 - k0 + (f1 - f0); ++d)
       for (const int k : {f0 - d, f1 + d})
         if (const WallProfile* w = at(k); w && !std::isnan(value(*w))) values.push_back(value(*w));
-    return median(values);
+    return median_of_measured(values);
   };
   bool changed = false;
   for (int a : {0, 2}) {
@@ -401,6 +396,13 @@ void StationMapBuilder::record_frame_dims(int frame, const Pieces& own) {
   }
 }
 
+std::vector<FrameStationSize> StationMapBuilder::frame_views(int first_station) const {
+  std::vector<FrameStationSize> views;
+  for (const auto& [station, frames] : frame_dims_)
+    for (const FrameDims& f : frames) views.push_back({f.frame, station - first_station, f.width_m, f.height_m});
+  return views;
+}
+
 StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
   Dims d{kNaN, kNaN, 0, 0};
   const auto it = frame_dims_.find(station);
@@ -412,8 +414,8 @@ StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
       if (!std::isnan(f.width_m)) w.push_back(f.width_m);
       if (!std::isnan(f.height_m)) h.push_back(f.height_m);
     }
-    if (std::isnan(d.width_m) && !w.empty()) d.width_m = median(w), d.width_frames = static_cast<int>(w.size());
-    if (std::isnan(d.height_m) && !h.empty()) d.height_m = median(h), d.height_frames = static_cast<int>(h.size());
+    if (std::isnan(d.width_m) && !w.empty()) d.width_m = median_of_measured(w), d.width_frames = static_cast<int>(w.size());
+    if (std::isnan(d.height_m) && !h.empty()) d.height_m = median_of_measured(h), d.height_frames = static_cast<int>(h.size());
   }
   return d;
 }
@@ -503,8 +505,9 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
     w[k] = !std::isnan(d.width_m) ? d.width_m : prof[k].wall_m[0] + prof[k].wall_m[1];
     h[k] = !std::isnan(d.height_m) ? d.height_m : prof[k].wall_m[2] + prof[k].wall_m[3];
   }
-  const SectionSplit split = split_sections(w, h, options_.section_change_mm / 1000.0,
-                                            options_.min_section_stations);
+  const SectionSplit split = keep_confirmed_joints(
+      split_sections(w, h, options_.section_change_mm / 1000.0, options_.min_section_stations), w, h,
+      frame_views(k0), pose_groups, options_.section_change_mm / 1000.0);
   const double step = options_.station_step_m;
   const auto deviation = [](double v, const std::optional<double>& design) -> std::optional<double> {
     if (!design || std::isnan(v)) return std::nullopt;
@@ -524,7 +527,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
       for (int k = run.first; k <= run.last; ++k)
         if (!split.outlier[static_cast<std::size_t>(k)] && !std::isnan(prof[k].wall_m[c]))
           v.push_back(prof[k].wall_m[c]);
-      wall_pos[c] = median(v);
+      wall_pos[c] = median_of_measured(v);
     }
     for (int a : {0, 2}) {  // a wall the section never showed: from the other and the dimension
       const double dim = a == 0 ? sec.width_m : sec.height_m;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/mapping/frame_walls.h"
+#include "core/mapping/section_evidence.h"
 #include "core/mapping/station_map.h"
 #include "core/pipeline/pipeline.h"
 
@@ -92,6 +93,8 @@ class StationMapBuilder {
     int width_frames, height_frames;
   };
   Dims station_dims(int station) const;
+  // Every accepted frame's own sizes, stations counted from `first_station`.
+  std::vector<FrameStationSize> frame_views(int first_station) const;
 
   // The plates across the axis in an accepted frame's samples, in map coordinates.
   void add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T);

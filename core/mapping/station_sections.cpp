@@ -1,20 +1,12 @@
 #include "core/mapping/station_sections.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "core/util/median.h"
 
 namespace tunnelmap {
 
 namespace {
-
-double median(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }), v.end());
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Differs by more than `change` where both are known.
 bool differs(double a, double b, double change) {
@@ -34,13 +26,13 @@ SectionSplit split_sections(const std::vector<double>& w, const std::vector<doub
   std::vector<double> sec_w, sec_h;  // accepted values of the current section
   int first = 0;
   const auto close = [&](int last) {
-    out.sections.push_back({first, last, median(sec_w), median(sec_h)});
+    out.sections.push_back({first, last, median_of_measured(sec_w), median_of_measured(sec_h)});
     sec_w.clear();
     sec_h.clear();
   };
   int k = 0;
   while (k < n) {
-    const double ref_w = median(sec_w), ref_h = median(sec_h);
+    const double ref_w = median_of_measured(sec_w), ref_h = median_of_measured(sec_h);
     if (!measured(w[k], h[k]) ||
         !(differs(w[k], ref_w, change) || differs(h[k], ref_h, change))) {
       if (!std::isnan(w[k])) sec_w.push_back(w[k]);
@@ -55,7 +47,7 @@ SectionSplit split_sections(const std::vector<double>& w, const std::vector<doub
     for (; j < n; ++j) {
       if (!measured(w[j], h[j])) continue;
       const bool off = differs(w[j], ref_w, change) || differs(h[j], ref_h, change);
-      const bool agrees = !differs(w[j], median(run_w), change) && !differs(h[j], median(run_h), change);
+      const bool agrees = !differs(w[j], median_of_measured(run_w), change) && !differs(h[j], median_of_measured(run_h), change);
       if (!off || !agrees) break;
       run.push_back(j);
       if (!std::isnan(w[j])) run_w.push_back(w[j]);
