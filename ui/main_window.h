@@ -11,7 +11,10 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include <Eigen/Core>
 
@@ -19,6 +22,10 @@
 #include <vtkSmartPointer.h>
 
 #include "ui/pipeline_runner.h"
+
+namespace tunnelmap {
+struct StationMap;
+}
 
 class QAction;
 class QActionGroup;
@@ -67,7 +74,14 @@ class MainWindow : public QMainWindow {
   bool load_preset(const QString& path);  // its name is shown in the title and status bar
   QString preset_name() const { return preset_name_; }  // "defaults" until a preset is loaded
   bool save_preset(const QString& path);
+  // After Processing > Map tunnel: the sectioned map with its plates (as `map --ply`);
+  // otherwise the shown frame's tunnel.
   bool export_map_ply(const QString& path);
+  // After Map tunnel, as `map --csv`, `--diaphragms-csv` and `--report` write them; an error
+  // when the open input has not been mapped.
+  bool export_station_csv(const QString& path);
+  bool export_diaphragms_csv(const QString& path);
+  bool export_report(const QString& path);
   bool export_planes_ply(const QString& path);
   bool export_results_json(const QString& path);
   bool export_results_csv(const QString& path);
@@ -158,7 +172,15 @@ class MainWindow : public QMainWindow {
 
  private:
   void build_menus();
-  void connect_recording_opener();  // progress, Cancel and the result in the status bar
+  void connect_recording_opener();
+  // The station map of the open input (Map tunnel) and the parameters it was made with.
+  struct MappedTunnel {
+    const StationMap* map;
+    nlohmann::json params;
+  };
+  std::optional<MappedTunnel> mapped_tunnel() const;
+  bool write_map_export(const QString& path, const std::function<void(const MappedTunnel&)>& write);
+  bool export_sectioned_map_ply(const QString& path);  // progress, Cancel and the result in the status bar
   void adopt_input(const QString& path, std::shared_ptr<const FrameSource> source);
   void build_navigation(QWidget* views, QWidget* results);  // keys over the views and results
   void update_plot_reference();  // ground truth of the dataset, else the design

@@ -42,26 +42,30 @@ void MainWindow::build_menus() {
   rebuild_recent_menu();
   build_session_actions(file);  // review sessions, Export 3D view, intrinsics (main_window_session.cpp)
   file->addSeparator();
-  file->addAction(tr("Export &map PLY…"), this, [this] {
-    const QString p = ask_save_path(tr("Export map PLY"), tr("PLY (*.ply)"), "ply");
-    if (!p.isEmpty()) export_map_ply(p);
-  })->setObjectName("exportMapPly");
-  file->addAction(tr("Export &planes PLY…"), this, [this] {
-    const QString p = ask_save_path(tr("Export planes PLY"), tr("PLY (*.ply)"), "ply");
-    if (!p.isEmpty()) export_planes_ply(p);
-  })->setObjectName("exportPlanesPly");
-  file->addAction(tr("Export results &JSON…"), this, [this] {
-    const QString p = ask_save_path(tr("Export results JSON"), tr("JSON (*.json)"), "json");
-    if (!p.isEmpty()) export_results_json(p);
-  })->setObjectName("exportResultsJson");
-  file->addAction(tr("Export results &CSV…"), this, [this] {
-    const QString p = ask_save_path(tr("Export results CSV"), tr("CSV (*.csv)"), "csv");
-    if (!p.isEmpty()) export_results_csv(p);
-  })->setObjectName("exportResultsCsv");
-  file->addAction(tr("Save &screenshot…"), this, [this] {
-    const QString p = ask_save_path(tr("Save screenshot"), tr("PNG (*.png)"), "png");
-    if (!p.isEmpty()) save_screenshot(p);
-  })->setObjectName("saveScreenshot");
+  // Each export: a menu entry, a save dialog (title, filter, default suffix) and its writer.
+  const auto add_export = [this, file](const QString& text, const QString& title, const QString& filter,
+                                       const QString& suffix, const char* name, bool (MainWindow::*write)(const QString&)) {
+    file->addAction(text, this, [=] {
+      const QString p = ask_save_path(title, filter, suffix);
+      if (!p.isEmpty()) (this->*write)(p);
+    })->setObjectName(name);
+  };
+  const QString ply = tr("PLY (*.ply)"), csv = tr("CSV (*.csv)");
+  add_export(tr("Export &map PLY…"), tr("Export map PLY"), ply, "ply", "exportMapPly", &MainWindow::export_map_ply);
+  add_export(tr("Export &station CSV…"), tr("Export station CSV"), csv, "csv", "exportStationCsv",
+             &MainWindow::export_station_csv);
+  add_export(tr("Export &diaphragms CSV…"), tr("Export diaphragms CSV"), csv, "csv", "exportDiaphragmsCsv",
+             &MainWindow::export_diaphragms_csv);
+  add_export(tr("Export inspection &report PDF…"), tr("Export inspection report"), tr("PDF (*.pdf)"), "pdf",
+             "exportReport", &MainWindow::export_report);
+  add_export(tr("Export &planes PLY…"), tr("Export planes PLY"), ply, "ply", "exportPlanesPly",
+             &MainWindow::export_planes_ply);
+  add_export(tr("Export results &JSON…"), tr("Export results JSON"), tr("JSON (*.json)"), "json", "exportResultsJson",
+             &MainWindow::export_results_json);
+  add_export(tr("Export results &CSV…"), tr("Export results CSV"), csv, "csv", "exportResultsCsv",
+             &MainWindow::export_results_csv);
+  add_export(tr("Save &screenshot…"), tr("Save screenshot"), tr("PNG (*.png)"), "png", "saveScreenshot",
+             &MainWindow::save_screenshot);
   file->addSeparator();
   file->addAction(tr("Process whole &sequence"), this, &MainWindow::process_sequence)
       ->setObjectName("processSequence");

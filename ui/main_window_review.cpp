@@ -10,6 +10,7 @@
 #include <QStyle>
 #include <QtConcurrent/QtConcurrentRun>
 #include <optional>
+#include <nlohmann/json.hpp>
 
 #include "core/mapping/dataset_mapping.h"
 #include "core/mapping/station_frames.h"
@@ -29,6 +30,7 @@ struct ReviewMap {
   std::vector<Eigen::Isometry3d> poses;       // per frame, as the map used them
   std::vector<bool> detected;
   std::optional<double> pending_ahead;        // cut here once the chosen frame is shown
+  nlohmann::json params;                      // the parameters the map was made with
 };
 
 namespace {
@@ -130,7 +132,8 @@ void MainWindow::map_tunnel() {
   status_label_->setText(tr("Mapping the tunnel over %1 frame(s)…").arg(ds->frames.size()));
   auto source = source_;
   Pipeline pipeline(params_->parameters());
-  sequence_future_ = QtConcurrent::run([this, source, pipeline]() mutable {
+  const nlohmann::json params = params_->parameters().to_json();
+  sequence_future_ = QtConcurrent::run([this, source, pipeline, params]() mutable {
     auto result = std::make_shared<DatasetMapping>();
     std::vector<Eigen::Isometry3d> poses;
     QString error;
@@ -140,7 +143,7 @@ void MainWindow::map_tunnel() {
     } catch (const std::exception& e) {
       error = QString::fromStdString(e.what());
     }
-    QMetaObject::invokeMethod(this, [this, source, result, poses, error] {
+    QMetaObject::invokeMethod(this, [this, source, result, poses, params, error] {
       map_running_ = sequence_running_ = false;
       if (!error.isEmpty()) {
         show_error(error);
@@ -153,6 +156,7 @@ void MainWindow::map_tunnel() {
       }
       review_map_->source = source;
       review_map_->poses = poses;
+      review_map_->params = params;
       review_map_->detected.clear();
       for (const TunnelMap& f : result->maps) review_map_->detected.push_back(f.detected);
       profile_->set_map(m);
@@ -166,6 +170,11 @@ void MainWindow::map_tunnel() {
       emit tunnelMapped(true);
     });
   });
+}
+
+std::optional<MainWindow::MappedTunnel> MainWindow::mapped_tunnel() const {
+  if (!source_ || review_map_->source != source_ || profile_->map().stations.empty()) return std::nullopt;
+  return MappedTunnel{&profile_->map(), review_map_->params};
 }
 
 bool MainWindow::show_station(double station_m) {

@@ -28,6 +28,7 @@ void write_results_csv(const std::string& path, const std::vector<FrameRecord>& 
 }
 
 bool MainWindow::export_map_ply(const QString& path) {
+  if (mapped_tunnel()) return export_sectioned_map_ply(path);
   if (!current_) return show_error(tr("%1: nothing to export (open an input first)").arg(path)), false;
   try {
     const Eigen::Isometry3d to_world = current_->frame.pose ? *current_->frame.pose : Eigen::Isometry3d::Identity();

@@ -27,8 +27,7 @@
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #ifdef TUNNELMAP_HAVE_REPORT
-#include "app/cli/map_image.h"
-#include "ui/report/inspection_report.h"
+#include "ui/report/map_report.h"
 #endif
 
 namespace tunnelmap::cli {
@@ -90,13 +89,6 @@ void add_refinement(nlohmann::json& doc, const PoseRefinement& r) {
   }
 }
 
-std::string now_text() {
-  const std::time_t t = std::time(nullptr);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&t));
-  return buf;
-}
-
 void print_summary(const StationMap& m, const PoseRefinement& refinement, double detect_ms,
                    double map_ms, int frames) {
   std::printf("map: %zu stations of %.2f m over %.2f m, %zu section(s), %d of %d frames used\n",
@@ -128,36 +120,6 @@ void print_summary(const StationMap& m, const PoseRefinement& refinement, double
               frames ? detect_ms / frames : 0.0, frames ? map_ms / frames : 0.0);
 }
 
-#ifdef TUNNELMAP_HAVE_REPORT
-void write_report(const MapOptions& o, const StationMap& m, const nlohmann::json& params) {
-  InspectionReportInput in;
-  in.input = o.in.input;
-  in.created = now_text();
-  in.params = params;
-  in.map = &m;
-  // The 3D image comes from the map PLY through the headless renderer.
-  const std::filesystem::path tmp =
-      std::filesystem::temp_directory_path() / ("tunnelmap-report-" + std::to_string(getpid()));
-  std::filesystem::create_directories(tmp);
-  const std::string ply = o.ply_path.empty() ? (tmp / "map.ply").string() : o.ply_path;
-  const std::string png = (tmp / "map.png").string();
-  std::string why;
-  if (!m.section_maps.empty()) {
-    if (o.ply_path.empty()) write_sectioned_map_ply(ply, m.section_maps, params, plate_outlines(m));
-    if (render_map_image(ply, png, why)) in.map_image_png = png;
-  } else {
-    why = "the map has no section";
-  }
-  in.map_image_note = why;
-  try {
-    write_inspection_report(o.report_path, in);
-  } catch (...) {
-    std::filesystem::remove_all(tmp);
-    throw;
-  }
-  std::filesystem::remove_all(tmp);
-}
-#endif
 
 void run(const MapOptions& o, CliContext& ctx) {
   const Parameters params = map_parameters(o);
@@ -204,7 +166,7 @@ void run(const MapOptions& o, CliContext& ctx) {
     write_file_atomically(o.diaphragms_csv_path, [&](std::ostream& out) { out << diaphragms_csv(m.girder); });
   if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj, plate_outlines(m));
 #ifdef TUNNELMAP_HAVE_REPORT
-  if (!o.report_path.empty()) write_report(o, m, pj);
+  if (!o.report_path.empty()) write_map_report(o.report_path, o.in.input, m, pj, o.ply_path);
 #endif
   ctx.exit_code = 0;
 }

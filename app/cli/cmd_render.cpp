@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/cli/commands.h"
-#include "app/cli/renderer_path.h"
+#include "core/util/renderer_path.h"
 
 namespace tunnelmap::cli {
 

@@ -10,7 +10,10 @@
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QAction>
+#include <QRegularExpression>
 #include <QtTest/QtTest>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -406,6 +409,75 @@ class MapReviewTest : public QObject {
       QVERIFY(cut.station_m > 0.4 && cut.station_m < 4.6);
     }
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
+  }
+
+  // File > Export station CSV, diaphragms CSV, map PLY and inspection report after Map tunnel
+  // write what `tunnelmap-cli map` writes for the same dataset and parameters; before it, the
+  // map exports say how to get a map.
+  void theMapsExportsAreTheCommandLinesFiles() {
+    tunnelmap::ui::MainWindow w;
+    w.suppress_dialogs = true;
+    QSignalSpy shown(&w, &tunnelmap::ui::MainWindow::frameShown);
+    QVERIFY(w.open_input(walk_));
+    QVERIFY(shown.wait(30000));
+    QString target;
+    w.choose_save_path = [&](const QString&, const QString&, const QString&) { return target; };
+    const auto export_to = [&](const char* action, const QString& name) {
+      target = dir_.filePath(name);
+      w.findChild<QAction*>(action)->trigger();
+      return target;
+    };
+    QVERIFY(!w.export_station_csv(dir_.filePath("early.csv")));
+    QVERIFY2(w.last_error().contains("Map tunnel"), qPrintable(w.last_error()));
+    QVERIFY(!QFile::exists(dir_.filePath("early.csv")));
+
+    // The test binary has no renderer beside it; the GUI finds app/render/tunnelmap-render.
+    qputenv("TUNNELMAP_RENDER", TUNNELMAP_RENDER_PATH);
+    QSignalSpy mapped(&w, &tunnelmap::ui::MainWindow::tunnelMapped);
+    w.map_tunnel();
+    QVERIFY(mapped.wait(120000));
+    QSignalSpy errors(&w, &tunnelmap::ui::MainWindow::errorShown);
+    const QString csv = export_to("exportStationCsv", "gui_stations.csv");
+    const QString diaphragms = export_to("exportDiaphragmsCsv", "gui_diaphragms.csv");
+    const QString ply = export_to("exportMapPly", "gui_map.ply");
+    const QString pdf = export_to("exportReport", "gui_report.pdf");
+    QVERIFY2(errors.isEmpty(), qPrintable(w.last_error()));
+    QVERIFY2(w.status_text().startsWith("Wrote"), qPrintable(w.status_text()));
+
+    QProcess cli;
+    cli.start(TUNNELMAP_CLI_PATH, {"map", walk_, "--quiet", "--csv", dir_.filePath("cli_stations.csv"), "--diaphragms-csv",
+                                   dir_.filePath("cli_diaphragms.csv"), "--ply", dir_.filePath("cli_map.ply"), "--report",
+                                   dir_.filePath("cli_report.pdf")});
+    QVERIFY(cli.waitForFinished(120000));
+    QCOMPARE(cli.exitCode(), 0);
+    const auto bytes = [](const QString& path) {
+      QFile f(path);
+      return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    QVERIFY(bytes(csv).count('\n') > 20);
+    QCOMPARE(bytes(csv), bytes(dir_.filePath("cli_stations.csv")));
+    QCOMPARE(bytes(diaphragms), bytes(dir_.filePath("cli_diaphragms.csv")));
+    QVERIFY(bytes(ply).startsWith("ply"));
+    QCOMPARE(bytes(ply), bytes(dir_.filePath("cli_map.ply")));
+    // The reports differ only in the time they were written.
+    const auto report_text = [](const QString& path) {
+      QProcess text;
+      text.start("pdftotext", {"-layout", path, "-"});
+      text.waitForFinished(60000);
+      QStringList lines = QString::fromUtf8(text.readAllStandardOutput()).split('\n');
+      lines.erase(std::remove_if(lines.begin(), lines.end(),
+                                 [](const QString& l) { return l.contains(QRegularExpression("\\d{4}-\\d\\d-\\d\\d \\d\\d:")); }),
+                  lines.end());
+      return lines;
+    };
+    if (const char* shots = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) QFile::copy(pdf, QString(shots) + "/gui_report.pdf");
+    const QStringList gui_text = report_text(pdf), cli_text = report_text(dir_.filePath("cli_report.pdf"));
+    QVERIFY(gui_text.size() > 30);
+    for (const QString& l : gui_text)
+      if (!cli_text.contains(l)) qInfo("only in the GUI's report: %s", qPrintable(l));
+    for (const QString& l : cli_text)
+      if (!gui_text.contains(l)) qInfo("only in the CLI's report: %s", qPrintable(l));
+    QCOMPARE(gui_text, cli_text);
   }
 
   // The command line: --map --station S waits for the map and the station's frame, then grabs.

@@ -9,7 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 
-#include "app/cli/map_image.h"
+#include "ui/report/report_map_image.h"
 #include "core/export/map_ply.h"
 #include "core/util/build_paths.h"
 #include "tests/ui/fresh_dir.h"
@@ -147,24 +147,24 @@ TEST(MapImage, RendersThroughTheRendererOrSaysWhyNot) {
   const std::string dir = fresh_dir("tunnelmap_map_image");
   const std::string ply = write_map(dir);
   std::string why;
-  EXPECT_TRUE(cli::render_map_image_with(TUNNELMAP_RENDER_PATH, ply, dir + "/map.png", why)) << why;
+  EXPECT_TRUE(render_map_image_with(TUNNELMAP_RENDER_PATH, ply, dir + "/map.png", why)) << why;
   EXPECT_TRUE(why.empty()) << why;
   const scene::RgbImage img = scene::load_png(dir + "/map.png");
   EXPECT_EQ(img.width, 1600);
   EXPECT_EQ(img.height, 1000);
 
-  EXPECT_FALSE(cli::render_map_image_with(dir + "/no-such-renderer", ply, dir + "/x.png", why));
+  EXPECT_FALSE(render_map_image_with(dir + "/no-such-renderer", ply, dir + "/x.png", why));
   EXPECT_NE(why.find("no-such-renderer"), std::string::npos) << why;
   EXPECT_EQ(why.find('\n'), std::string::npos) << why;
 
   { std::ofstream(dir + "/bad.ply") << "not a ply"; }
-  EXPECT_FALSE(cli::render_map_image_with(TUNNELMAP_RENDER_PATH, dir + "/bad.ply", dir + "/x.png", why));
+  EXPECT_FALSE(render_map_image_with(TUNNELMAP_RENDER_PATH, dir + "/bad.ply", dir + "/x.png", why));
   EXPECT_NE(why.find("bad.ply"), std::string::npos) << why;
   EXPECT_EQ(why.find('\n'), std::string::npos) << why;
   EXPECT_FALSE(fs::exists(dir + "/x.png"));
 
   // From a test executable there is no renderer beside it: a reason, not a crash.
-  EXPECT_FALSE(cli::render_map_image(ply, dir + "/y.png", why));
+  EXPECT_FALSE(render_map_image(ply, dir + "/y.png", why));
   EXPECT_FALSE(why.empty());
 }
 

@@ -1,4 +1,4 @@
-#include "app/cli/map_image.h"
+#include "ui/report/report_map_image.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <vector>
 
-#include "app/cli/renderer_path.h"
+#include "core/util/renderer_path.h"
 
 extern char** environ;
 
-namespace tunnelmap::cli {
+namespace tunnelmap {
 
 namespace {
 
@@ -107,4 +107,4 @@ bool render_map_image(const std::string& map_ply, const std::string& png, std::s
   return render_map_image_with(find_renderer().string(), map_ply, png, why_not);
 }
 
-}  // namespace tunnelmap::cli
+}  // namespace tunnelmap
