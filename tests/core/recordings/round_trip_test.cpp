@@ -1,6 +1,6 @@
 // A simulated posed sequence written as an MCAP (zstd chunks) and as a rosbag2 .db3 (32FC1
 // depth, camera info, colour, odometry) reads back as the same frames, and `detect` gives the
-// same results on the recording as on the original dataset.
+// same results on the recording as on the original dataset; `map` and `fuse` likewise.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -84,6 +84,15 @@ TEST(RecordingRoundTrip, FuseTakesTheBag) {
   const nlohmann::json original = detect_json(seq.tmp, seq.dataset_dir, "fuse_original", "fuse");
   ASSERT_EQ(original["frames"].size(), 4u);
   expect_same_detections(original, detect_json(seq.tmp, bag, "fuse_bag", "fuse"));
+}
+
+TEST(RecordingRoundTrip, Db3MapsAndMcapFusesAsTheDataset) {
+  const SimulatedSequence seq;
+  const nlohmann::json mapped = detect_json(seq.tmp, seq.dataset_dir, "map_original", "map");
+  ASSERT_TRUE(mapped["frames"][0].contains("camera_to_world"));
+  expect_same_detections(mapped, detect_json(seq.tmp, write_db3(seq), "map_db3", "map"));
+  expect_same_detections(detect_json(seq.tmp, seq.dataset_dir, "fuse_original", "fuse"),
+                         detect_json(seq.tmp, write_mcap(seq, "zstd"), "fuse_mcap", "fuse"));
 }
 
 TEST(RecordingRoundTrip, EveryAndDurationSelectFrames) {
