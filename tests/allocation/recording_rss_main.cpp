@@ -19,22 +19,16 @@
 #include "core/recordings/recording_frames.h"
 #include "tests/support/cdr_writer.h"
 #include "tests/support/mcap_writer.h"
+#include "tests/allocation/process_memory.h"
 
 using namespace tunnelmap;
 namespace fs = std::filesystem;
 
+using testing::status_mb;
+
 namespace {
 
 constexpr std::uint32_t kWidth = 640, kHeight = 480;
-
-double status_mb(const char* key) {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  const std::string prefix = std::string(key) + ":";
-  while (std::getline(in, line))
-    if (line.rfind(prefix, 0) == 0) return std::atof(line.c_str() + prefix.size()) / 1024.0;  // kB
-  return -1.0;
-}
 
 // A wall at 1-3 m with millimetre noise in the low bits, so that zstd cannot shrink it much.
 std::vector<std::uint8_t> depth_image(int frame) {

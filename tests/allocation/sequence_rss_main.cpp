@@ -17,21 +17,14 @@
 #include "core/pipeline/sequence_runner.h"
 #include "core/sim/sim_dataset_writer.h"
 #include "core/util/build_paths.h"
+#include "tests/allocation/process_memory.h"
 
 using namespace tunnelmap;
 namespace fs = std::filesystem;
 
-namespace {
+using testing::status_mb;
 
-// VmRSS and VmHWM (peak) of this process, in MB.
-double status_mb(const char* key) {
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  const std::string prefix = std::string(key) + ":";
-  while (std::getline(in, line))
-    if (line.rfind(prefix, 0) == 0) return std::atof(line.c_str() + prefix.size()) / 1024.0;  // kB
-  return -1.0;
-}
+namespace {
 
 // `frames` frames: the inner source's frames over and over.
 class CyclingSource : public FrameSource {
