@@ -11,6 +11,8 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
+#include <QScreen>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenu>
@@ -93,8 +95,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   results_dock->setObjectName("resultsDock");
   results_dock->setWidget(bottom);
   addDockWidget(Qt::BottomDockWidgetArea, results_dock);
-  // First-run layout (a saved layout replaces it): most of the height for the views.
-  resizeDocks({results_dock}, {230}, Qt::Vertical);
 
   status_label_ = new QLabel(tr("Ready"), this);
   progress_ = new QProgressBar(this);
@@ -188,7 +188,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   build_menus();
 
   QSettings settings;
-  restoreGeometry(settings.value("window/geometry").toByteArray());
+  if (!restoreGeometry(settings.value("window/geometry").toByteArray()))
+    apply_first_start_layout(params_dock, results_dock);
   restoreState(settings.value("window/state").toByteArray());
   const QByteArray last = settings.value("params/last").toByteArray();
   if (!last.isEmpty()) {
@@ -200,9 +201,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       // Stale settings from another version: defaults.
     }
   }
-  if (geometry().width() < 400) resize(1400, 860);
   restore_view_settings();  // layers, method, camera (main_window_session.cpp)
   update_preset_status();
+}
+
+// Without a saved layout: 1600 x 900 where the screen allows, a parameter panel wide enough
+// for 200 px sliders (a 60 px slider turned one pixel into a decade of min points), and room
+// for eight result rows under the views.
+void MainWindow::apply_first_start_layout(QDockWidget* params, QDockWidget* results) {
+  const QScreen* screen = QGuiApplication::primaryScreen();
+  const QSize room = screen ? screen->availableGeometry().size() : QSize(1600, 900);
+  resize(std::min(1600, room.width()), std::min(900, room.height()));
+  resizeDocks({params}, {560}, Qt::Horizontal);
+  resizeDocks({results}, {320}, Qt::Vertical);
 }
 
 MainWindow::~MainWindow() {
@@ -313,6 +324,7 @@ void MainWindow::set_method(Method method) {
     if (a->objectName() == QString("method_") + method_name(method)) a->setChecked(true);
   if (method == method_) return;
   method_ = method;
+  params_->set_method(method);
   request_run(true);
 }
 

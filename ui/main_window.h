@@ -172,6 +172,7 @@ class MainWindow : public QMainWindow {
 
  private:
   void build_menus();
+  void apply_first_start_layout(QDockWidget* params, QDockWidget* results);
   void connect_recording_opener();
   // The station map of the open input (Map tunnel) and the parameters it was made with.
   struct MappedTunnel {

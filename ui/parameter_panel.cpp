@@ -8,6 +8,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include "core/engine/parameter_relevance.h"
 #include "ui/parameter_row.h"
 
 namespace tunnelmap::ui {
@@ -36,7 +37,9 @@ QString group_title(const QString& prefix) {
   if (prefix == "grow") return QObject::tr("Plane growing (PG&&C)");
   if (prefix == "tunnel") return QObject::tr("Tunnel detection");
   if (prefix == "zones") return QObject::tr("Zones");
-  if (prefix == "baselines") return QObject::tr("Baselines (R&&L, Qhull)");
+  if (prefix == "ransac") return QObject::tr("RANSAC && LSE baseline");
+  if (prefix == "qhull") return QObject::tr("Qhull baseline");
+  if (prefix == "slam") return QObject::tr("Structure SLAM (posed sequences)");
   if (prefix == "map") return QObject::tr("Station map");
   if (prefix == "fusion") return QObject::tr("Fusion");
   return prefix;  // a group added to the table later still gets its rows
@@ -61,6 +64,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
     const QString prefix = key.section('.', 0, 0);
     if (!groups.contains(prefix)) {
       auto* box = new QGroupBox(group_title(prefix), inner);
+      groups_[prefix] = box;
       groups[prefix] = new QVBoxLayout(box);
       layout->addWidget(box);
     }
@@ -74,6 +78,7 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
         rows_[k]->set_value(params_.get(k.toStdString()));  // keep the last valid value
         return;
       }
+      update_relevance();
       emit parametersChanged(false);
     });
     const QString name = QString::fromStdString(spec.label.empty() ? spec.key : spec.label);
@@ -100,12 +105,32 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   });
   connect(load, &QPushButton::clicked, this, &ParameterPanel::loadPresetRequested);
   connect(save, &QPushButton::clicked, this, &ParameterPanel::savePresetRequested);
+  update_relevance();
+}
+
+void ParameterPanel::set_method(Method method) {
+  method_ = method;
+  update_relevance();
+}
+
+void ParameterPanel::update_relevance() {
+  QMap<QString, bool> group_shown;
+  for (const ParameterSpec& spec : parameter_table()) {
+    const QString key = QString::fromStdString(spec.key);
+    const ParameterRelevance r = parameter_relevance(spec, params_, method_);
+    ParameterRow* row = rows_[key];
+    row->setHidden(r.relevance == Relevance::OtherMethod);
+    row->set_unused_reason(QString::fromStdString(r.reason));
+    group_shown[key.section('.', 0, 0)] |= r.relevance != Relevance::OtherMethod;
+  }
+  for (auto it = groups_.begin(); it != groups_.end(); ++it) it.value()->setHidden(!group_shown.value(it.key()));
 }
 
 void ParameterPanel::apply(const Parameters& p) {
   params_ = p;
   committed_ = p;
   for (auto it = rows_.begin(); it != rows_.end(); ++it) it.value()->set_value(p.get(it.key().toStdString()));
+  update_relevance();
   emit parametersChanged(true);
 }
 
@@ -119,6 +144,7 @@ void ParameterPanel::commit(const QString& what) {
 void ParameterPanel::set_parameters(const Parameters& p, const QString& what) {
   params_ = p;
   for (auto it = rows_.begin(); it != rows_.end(); ++it) it.value()->set_value(p.get(it.key().toStdString()));
+  update_relevance();
   commit(what.isEmpty() ? tr("Set parameters") : what);
   emit parametersChanged(true);
 }

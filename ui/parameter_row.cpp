@@ -1,23 +1,32 @@
 #include "ui/parameter_row.h"
 
+#include <QAbstractScrollArea>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QScrollBar>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSlider>
+#include <QEvent>
 #include <QToolButton>
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace tunnelmap::ui {
 
-ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget(parent), spec_(spec) {
+ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent)
+    : QWidget(parent), spec_(spec), scale_(spec) {
   setObjectName(QString::fromStdString(spec.key));
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  auto* label = new QLabel(QString::fromStdString(spec.label), this);
-  label->setMinimumWidth(175);  // the longest label: every slider starts at the same x
+  label_ = new QLabel(QString::fromStdString(spec.label), this);
+  label_->setMinimumWidth(175);  // the longest label: every slider starts at the same x
   slider_ = new QSlider(Qt::Horizontal, this);
-  slider_->setRange(0, to_slider(spec.max));
+  slider_->setRange(0, scale_.positions());
+  slider_->setPageStep(std::max(1, scale_.positions() / 20));
   slider_->setObjectName("slider");
+  slider_->setFocusPolicy(Qt::StrongFocus);  // not Wheel focus: the wheel scrolls the panel
   spin_ = new QDoubleSpinBox(this);
   spin_->setObjectName("spin");
   spin_->setRange(spec.min, spec.max);
@@ -30,30 +39,32 @@ ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget
   if (!unit.isEmpty()) spin_->setSuffix(" " + unit);
   spin_->setKeyboardTracking(false);
   spin_->setFixedWidth(96);  // same width on every row: sliders and values line up
+  spin_->setFocusPolicy(Qt::StrongFocus);
+  slider_->installEventFilter(this);
+  spin_->installEventFilter(this);
   reset_ = new QToolButton(this);
   reset_->setText(QStringLiteral("↺"));
   reset_->setToolTip(tr("Reset to default (%1)").arg(spec.default_value));
-  layout->addWidget(label);
+  layout->addWidget(label_);
   layout->addWidget(slider_, 1);
   layout->addWidget(spin_);
   layout->addWidget(reset_);
-  const QString tip = QString::fromStdString(spec.description) +
+  tooltip_ = QString::fromStdString(spec.description) +
                       tr("\nRange %1 – %2 %3, default %4. Stage: %5.")
                           .arg(spec.min)
                           .arg(spec.max)
                           .arg(QString::fromStdString(spec.unit))
                           .arg(spec.default_value)
                           .arg(stage_name(spec.stage));
-  for (QWidget* w : {static_cast<QWidget*>(label), static_cast<QWidget*>(slider_),
-                     static_cast<QWidget*>(spin_)})
-    w->setToolTip(tip);
+  for (QWidget* w : described_widgets()) w->setToolTip(tooltip_);
 
   set_value(spec.default_value);
   connect(slider_, &QSlider::valueChanged, this, [this](int s) {
     if (updating_) return;
-    double v = from_slider(s);
-    set_value(v);
+    show_value(scale_.from_slider(s), false);  // the slider stays where the hand put it
     emit valueEdited(QString::fromStdString(spec_.key), value());
+    // A drag is one edit, finished on release; a click on the groove or a key is one by itself.
+    if (!slider_->isSliderDown()) emit editFinished(QString::fromStdString(spec_.key));
   });
   connect(slider_, &QSlider::sliderReleased, this,
           [this] { emit editFinished(QString::fromStdString(spec_.key)); });
@@ -70,28 +81,43 @@ ParameterRow::ParameterRow(const ParameterSpec& spec, QWidget* parent) : QWidget
   });
 }
 
-int ParameterRow::to_slider(double v) const {
-  return static_cast<int>(std::lround((v - spec_.min) / spec_.step));
-}
-
-double ParameterRow::from_slider(int s) const {
-  return std::min(spec_.max, spec_.min + s * spec_.step);
-}
-
 double ParameterRow::value() const {
   double v = spin_->value();
   if (spec_.integer) v = std::round(v);
   return v;
 }
 
-void ParameterRow::set_value(double v) {
+std::array<QWidget*, 3> ParameterRow::described_widgets() const { return {label_, slider_, spin_}; }
+
+void ParameterRow::set_value(double v) { show_value(v, true); }
+
+void ParameterRow::show_value(double v, bool move_slider) {
   updating_ = true;
   v = std::clamp(v, spec_.min, spec_.max);
   if (spec_.integer) v = std::round(v);
   spin_->setValue(v);
-  slider_->setValue(to_slider(v));
+  if (move_slider) slider_->setValue(scale_.to_slider(v));
   updating_ = false;
   update_reset_state();
+}
+
+void ParameterRow::set_unused_reason(const QString& reason) {
+  setEnabled(reason.isEmpty());
+  const QString tip = reason.isEmpty() ? tooltip_ : tr("Not used now: %1.\n\n%2").arg(reason, tooltip_);
+  for (QWidget* w : described_widgets()) w->setToolTip(tip);
+}
+
+// The wheel goes to the scroll bar of the panel the row is in, never to the slider or the spin
+// box: scrolling a long panel must not edit whatever value passes under the pointer.
+bool ParameterRow::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() != QEvent::Wheel) return QWidget::eventFilter(watched, event);
+  for (QWidget* p = parentWidget(); p; p = p->parentWidget()) {
+    if (auto* area = qobject_cast<QAbstractScrollArea*>(p)) {
+      QCoreApplication::sendEvent(area->verticalScrollBar(), event);
+      break;
+    }
+  }
+  return true;
 }
 
 void ParameterRow::update_reset_state() {

@@ -20,6 +20,9 @@
 #include <QProcess>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QWheelEvent>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -361,6 +364,108 @@ class GuiReviewTest : public QObject {
     QCOMPARE(value("grow.angle_deg"), angle0 + 2.0);
     for (QWidget* top : QApplication::topLevelWidgets())
       QVERIFY2(!(qobject_cast<QDialog*>(top) && top->isVisible()), qPrintable(top->metaObject()->className()));
+  }
+
+  // A click on the groove, an arrow key and a drag are one undo step each, and an undo reverts
+  // exactly its own parameter; the wheel over a slider or a value scrolls the panel and edits
+  // nothing; a range over decades (min points) is logarithmic, so a 10-pixel drag from 40
+  // stays below 100 (linear, it reached 23,258).
+  void everyInputIsOneUndoStepAndTheWheelScrolls() {
+    MainWindow w;  // the first-start layout (no saved settings)
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.open_input(sample_));
+    QVERIFY(wait_frame(w));
+    auto* panel = w.parameter_panel();
+    QUndoStack* undo = panel->undo_stack();
+    auto value = [&](const char* key) { return panel->parameters().get(key); };
+    QSlider* angle = panel->row("grow.angle_deg")->slider();
+    const double angle0 = value("grow.angle_deg");
+    QTest::mouseClick(angle, Qt::LeftButton, {}, QPoint(angle->width() - 3, angle->height() / 2));
+    QVERIFY(value("grow.angle_deg") > angle0);
+    QCOMPARE(undo->count(), 1);
+    const double angle1 = value("grow.angle_deg");
+
+    QSlider* distance = panel->row("grow.distance_mm")->slider();
+    const double distance0 = value("grow.distance_mm");
+    distance->setFocus();
+    QTest::keyClick(distance, Qt::Key_Right);
+    QCOMPARE(value("grow.distance_mm"), distance0 + 0.5);
+    QCOMPARE(undo->count(), 2);
+
+    auto* scroll = panel->findChild<QScrollArea*>();
+    QVERIFY(scroll && scroll->verticalScrollBar()->maximum() > 0);
+    const int scrolled0 = scroll->verticalScrollBar()->value();
+    for (QWidget* target : {static_cast<QWidget*>(distance),
+                            static_cast<QWidget*>(panel->row("grow.distance_mm")->spin_box())}) {
+      QWheelEvent wheel(QPointF(5, 5), target->mapToGlobal(QPoint(5, 5)), QPoint(), QPoint(0, -120), Qt::NoButton,
+                        Qt::NoModifier, Qt::NoScrollPhase, false);
+      QApplication::sendEvent(target, &wheel);
+    }
+    QCOMPARE(value("grow.distance_mm"), distance0 + 0.5);
+    QCOMPARE(undo->count(), 2);
+    QVERIFY(scroll->verticalScrollBar()->value() > scrolled0);
+
+    undo->undo();  // the key only
+    QCOMPARE(value("grow.distance_mm"), distance0);
+    QCOMPARE(value("grow.angle_deg"), angle1);
+    QVERIFY(wait_frame(w));
+
+    auto* min_points = panel->row("grow.min_points");
+    QVERIFY(min_points->scale().logarithmic());
+    QVERIFY(!panel->row("grow.angle_deg")->scale().logarithmic());
+    scroll->ensureWidgetVisible(min_points);
+    QTest::qWait(50);
+    QSlider* slider = min_points->slider();
+    QStyleOptionSlider opt;
+    opt.initFrom(slider);
+    opt.orientation = Qt::Horizontal;
+    opt.minimum = slider->minimum(), opt.maximum = slider->maximum();
+    opt.sliderPosition = opt.sliderValue = slider->value();
+    const QPoint handle =
+        slider->style()->subControlRect(QStyle::CC_Slider, &opt, QStyle::SC_SliderHandle, slider).center();
+    QTest::mousePress(slider, Qt::LeftButton, {}, handle);
+    for (int dx : {5, 10}) {  // QTest::mouseMove carries no pressed button: a drag needs one
+      QMouseEvent move(QEvent::MouseMove, handle + QPoint(dx, 0), slider->mapToGlobal(handle + QPoint(dx, 0)),
+                       Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(slider, &move);
+    }
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, handle + QPoint(10, 0));
+    const double points = value("grow.min_points");
+    keep(w.grab().toImage(), "parameters_1600x900.png");
+    QVERIFY2(points > 40 && points < 100, qPrintable(QString::number(points)));
+    QCOMPARE(undo->count(), 2);  // the drag: one step (the undone key step was replaced)
+  }
+
+  // Only the sliders the detection reads are live: another method's rows are hidden, and rows
+  // the growing order does not read are greyed with the reason in their tooltip.
+  void onlySlidersThatCountAreShown() {
+    MainWindow w;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* panel = w.parameter_panel();
+    auto* ransac = panel->row("ransac.iterations");
+    auto* normal_window = panel->row("normals.smoothing_px");
+    auto* angle = panel->row("grow.angle_deg");
+    QVERIFY(ransac->isHidden());
+    QVERIFY(!angle->isHidden() && angle->isEnabled());
+    QVERIFY(!normal_window->isHidden() && !normal_window->isEnabled());
+    QVERIFY(normal_window->slider()->toolTip().startsWith("Not used now"));
+    QVERIFY(!panel->row("grow.grid_step")->isEnabled());
+    QVERIFY(!panel->row("grow.neighbourhood_n")->isEnabled());
+    QVERIFY(panel->row("grow.candidate_distance_mm")->isEnabled());
+
+    w.set_method(tunnelmap::Method::Ransac);
+    QVERIFY(!ransac->isHidden());
+    QVERIFY(angle->isHidden());
+    QVERIFY(panel->row("qhull.min_points")->isHidden());
+    w.set_method(tunnelmap::Method::Pgc);
+
+    panel->row("grow.cell_px")->spin_box()->setValue(0);  // the pixel grid reads the normals
+    QVERIFY(normal_window->isEnabled());
+    QVERIFY(!normal_window->slider()->toolTip().startsWith("Not used now"));
+    QVERIFY(panel->row("grow.grid_step")->isEnabled());
+    QVERIFY(ransac->isHidden());
   }
 
   // Every row names its method and parameter set; the summary has one line per (method, set)
