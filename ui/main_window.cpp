@@ -29,6 +29,7 @@
 
 #include "core/io/ply_mesh_reader.h"
 #include "core/recordings/recording.h"
+#include "core/tunnel/tunnel_options.h"
 #include "core/util/error.h"
 #include "ui/depth_view_widget.h"
 #include "ui/fused_scene.h"
@@ -196,6 +197,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     try {
       Parameters p;
       p.apply_json(nlohmann::json::parse(last.toStdString()), "settings");
+      // The last design belonged to the last input, not to whatever opens next.
+      p.set(tunnel_keys::design_width_m, 0.0);
+      p.set(tunnel_keys::design_height_m, 0.0);
       params_->set_initial_parameters(p);
     } catch (const std::exception&) {
       // Stale settings from another version: defaults.
@@ -273,6 +277,8 @@ void MainWindow::adopt_input(const QString& path, std::shared_ptr<const FrameSou
   if (live_->running()) stop_live_view();
   leave_fused_view();
   fused_.reset();  // a running compare fusion then finds nothing to attach to
+  forget_review_state();
+  const QString previous = input_path_;
   source_ = source;
   input_path_ = path;
   frame_index_ = 0;
@@ -283,6 +289,7 @@ void MainWindow::adopt_input(const QString& path, std::shared_ptr<const FrameSou
   timeline_->set_frame_count(static_cast<int>(source_->size()));
   results_->set_frame_count(static_cast<int>(source_->size()));
   results_->set_current(0);
+  if (!previous.isEmpty() && previous != path) clear_design(previous);
   const Dataset* ds = source_->dataset();
   results_->set_ground_truth(ds ? ds->gt_width_m : std::nullopt, ds ? ds->gt_height_m : std::nullopt);
   update_plot_reference();

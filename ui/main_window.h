@@ -25,6 +25,7 @@
 
 namespace tunnelmap {
 struct StationMap;
+struct DatasetMapping;
 }
 
 class QAction;
@@ -185,6 +186,8 @@ class MainWindow : public QMainWindow {
   void adopt_input(const QString& path, std::shared_ptr<const FrameSource> source);
   void build_navigation(QWidget* views, QWidget* results);  // keys over the views and results
   void update_plot_reference();  // ground truth of the dataset, else the design
+  void clear_design(const QString& previous_input);
+  void forget_review_state();
   void update_preset_status();   // title and status bar: input, preset, "(modified)"
   void offer_matching_preset();  // the dataset's tunnel kind has a preset: offer it
   void show_error(const QString& message);
@@ -203,6 +206,8 @@ class MainWindow : public QMainWindow {
   void leave_fused_view();
   void build_review_docks(QMenu* processing, QMenu* view);
   void review_frame_shown();  // the cross-section follows the shown frame
+  void finish_map_tunnel(const std::shared_ptr<const FrameSource>& source, const DatasetMapping& result,
+                         const nlohmann::json& params, const QString& error);
 
   View3DWidget* view3d_;
   DepthViewWidget* depth_view_;

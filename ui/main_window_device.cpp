@@ -7,6 +7,7 @@
 #include "sensors/openni/device_list.h"
 #include "ui/live_view.h"
 #include "ui/main_window.h"
+#include "ui/timeline_widget.h"
 #include "ui/map_summary.h"
 #include "ui/results_panel.h"
 
@@ -68,6 +69,8 @@ bool MainWindow::start_live_view(const QString& uri_in) {
   }
   reset_camera_ = true;
   results_->clear();
+  timeline_->set_frame_count(0);  // the camera's frames are not the open input's
+  forget_review_state();
   status_label_->setText(tr("Live %1: waiting for the first frame…").arg(uri));
   update_device_actions();
   return true;
@@ -77,6 +80,7 @@ void MainWindow::stop_live_view() {
   if (live_->recording()) stop_recording();
   live_->stop();
   update_device_actions();
+  if (source_) timeline_->set_frame_count(static_cast<int>(source_->size()));
   status_label_->setText(tr("Live view stopped"));
 }
 

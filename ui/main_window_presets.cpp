@@ -7,7 +7,9 @@
 #include <QPushButton>
 #include <nlohmann/json.hpp>
 
+#include "core/tunnel/tunnel_options.h"
 #include "core/util/build_paths.h"
+#include "ui/message_log.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 
@@ -36,6 +38,18 @@ QString tunnel_kind(const Dataset& ds) {
 }
 
 }  // namespace
+
+// A design typed for one input is not the next input's: it is cleared (one undo step) and the
+// status bar says so. A session or a preset brings its own design after this.
+void MainWindow::clear_design(const QString& previous_input) {
+  Parameters p = params_->parameters();
+  if (p.get(tunnel_keys::design_width_m) == 0.0 && p.get(tunnel_keys::design_height_m) == 0.0) return;
+  p.set(tunnel_keys::design_width_m, 0.0);
+  p.set(tunnel_keys::design_height_m, 0.0);
+  params_->set_parameters(p, tr("Clear the design of %1").arg(previous_input));
+  messages_->add(tr("The design set for %1 was cleared: a design belongs to its input or session")
+                     .arg(previous_input.isEmpty() ? tr("the last run") : previous_input));
+}
 
 bool MainWindow::load_preset(const QString& path) {
   try {

@@ -6,6 +6,8 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QStyle>
 #include <QtConcurrent/QtConcurrentRun>
@@ -116,6 +118,17 @@ void MainWindow::review_frame_shown() {
   }
 }
 
+// A new input (or the live camera) starts clean: the previous input's map, profile, cut and
+// measurements describe another tunnel.
+void MainWindow::forget_review_state() {
+  *review_map_ = ReviewMap{};
+  review_frame_ = -1;
+  profile_->clear();
+  cross_section_->set_frame(nullptr, std::nullopt, std::nullopt);
+  view3d_->clear_measurement();
+  depth_view_->clear_measurement();
+}
+
 bool MainWindow::map_running() const { return map_running_; }
 
 void MainWindow::map_tunnel() {
@@ -129,47 +142,68 @@ void MainWindow::map_tunnel() {
   }
   // One background job at a time (the window waits for it on close): sequence, fusion or map.
   map_running_ = sequence_running_ = true;
-  status_label_->setText(tr("Mapping the tunnel over %1 frame(s)…").arg(ds->frames.size()));
+  cancel_.store(false);
+  const int n = static_cast<int>(ds->frames.size());
+  status_label_->setText(tr("Mapping the tunnel over %1 frame(s)…").arg(n));
+  progress_->setRange(0, n + 1);  // the last step is the map itself, after every frame
+  progress_->setValue(0);
+  progress_->show();
+  cancel_button_->show();
   auto source = source_;
   Pipeline pipeline(params_->parameters());
   const nlohmann::json params = params_->parameters().to_json();
   sequence_future_ = QtConcurrent::run([this, source, pipeline, params]() mutable {
     auto result = std::make_shared<DatasetMapping>();
-    std::vector<Eigen::Isometry3d> poses;
     QString error;
     try {
-      *result = map_dataset(*source->dataset(), pipeline, true);
-      poses = result->mapped.poses;
+      *result = map_dataset(*source->dataset(), pipeline, true, [this](std::size_t done) {
+        QMetaObject::invokeMethod(this, [this, done] { progress_->setValue(static_cast<int>(done)); });
+        return !cancel_.load();
+      });
     } catch (const std::exception& e) {
       error = QString::fromStdString(e.what());
     }
-    QMetaObject::invokeMethod(this, [this, source, result, poses, params, error] {
+    QMetaObject::invokeMethod(this, [this, source, result, params, error] {
       map_running_ = sequence_running_ = false;
-      if (!error.isEmpty()) {
-        show_error(error);
-        return emit tunnelMapped(false);
-      }
-      const StationMap& m = result->mapped.stations;
-      if (!m.ok) {
-        show_error(tr("%1: no map: %2").arg(input_path_, QString::fromStdString(m.reason)));
-        return emit tunnelMapped(false);
-      }
-      review_map_->source = source;
-      review_map_->poses = poses;
-      review_map_->params = params;
-      review_map_->detected.clear();
-      for (const TunnelMap& f : result->maps) review_map_->detected.push_back(f.detected);
-      profile_->set_map(m);
-      profile_dock_->show();
-      profile_dock_->raise();
-      status_label_->setText(tr("Tunnel mapped: %1 stations over %2 m, %3 section(s), %4 out of tolerance")
-                                 .arg(m.stations.size())
-                                 .arg(m.sections.back().to_m - m.sections.front().from_m, 0, 'f', 2)
-                                 .arg(m.sections.size())
-                                 .arg(m.out_of_tolerance().size()));
-      emit tunnelMapped(true);
+      progress_->hide();
+      cancel_button_->hide();
+      finish_map_tunnel(source, *result, params, error);
     });
   });
+}
+
+void MainWindow::finish_map_tunnel(const std::shared_ptr<const FrameSource>& source, const DatasetMapping& result,
+                                   const nlohmann::json& params, const QString& error) {
+  if (!error.isEmpty()) {
+    show_error(error);
+    return emit tunnelMapped(false);
+  }
+  if (result.cancelled) {
+    status_label_->setText(tr("Map tunnel cancelled; the previous map is kept"));
+    return emit tunnelMapped(false);
+  }
+  const StationMap& m = result.mapped.stations;
+  if (!m.ok) {
+    show_error(tr("%1: no map: %2").arg(input_path_, QString::fromStdString(m.reason)));
+    return emit tunnelMapped(false);
+  }
+  review_map_->source = source;
+  review_map_->poses = result.mapped.poses;
+  review_map_->params = params;
+  review_map_->detected.clear();
+  for (const TunnelMap& f : result.maps) review_map_->detected.push_back(f.detected);
+  profile_->set_map(m);
+  profile_dock_->show();
+  profile_dock_->raise();
+  status_label_->setText(tr("Tunnel mapped from %1 of %2 frame(s): %3 stations over %4 m, %5 section(s), "
+                            "%6 out of tolerance")
+                             .arg(m.frames_used)
+                             .arg(m.frames)
+                             .arg(m.stations.size())
+                             .arg(m.sections.back().to_m - m.sections.front().from_m, 0, 'f', 2)
+                             .arg(m.sections.size())
+                             .arg(m.out_of_tolerance().size()));
+  emit tunnelMapped(true);
 }
 
 std::optional<MainWindow::MappedTunnel> MainWindow::mapped_tunnel() const {

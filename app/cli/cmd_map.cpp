@@ -135,7 +135,10 @@ void run(const MapOptions& o, CliContext& ctx) {
     if (!p.empty()) check_output_path(p);  // fail now, not after the work
   Progress progress(ds.frames.size());
   DatasetMapping dm = map_dataset(ds, pipeline, !o.no_pose_refinement,
-                                  [&](std::size_t done) { progress.step(done); });
+                                  [&](std::size_t done) {
+                                    progress.step(done);
+                                    return true;
+                                  });
   const MappedSequence& mapped = dm.mapped;
   const StationMap& m = mapped.stations;
   const int n = static_cast<int>(dm.maps.size());

@@ -24,7 +24,7 @@ std::vector<Eigen::Isometry3d> dataset_poses(const Dataset& ds) {
 }
 
 DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_poses,
-                           const std::function<void(std::size_t)>& progress) {
+                           const MappingProgress& progress) {
   const std::size_t n = ds.frames.size();
   if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
   const std::vector<Eigen::Isometry3d> poses = dataset_poses(ds);
@@ -55,9 +55,10 @@ DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_po
     out.sources[k] = f.frame.source;
     out.plane_counts[k] = result.planes.planes.size();
     out.timings[k] = result.timings_ms;
-    if (progress) progress(k + 1);
-    return true;
+    out.cancelled = progress && !progress(k + 1);
+    return !out.cancelled;
   });
+  if (out.cancelled) return out;
   out.mapped = map_posed_sequence(out.maps, walls, poses, pipeline.params(), refine_poses);
   out.map_ms = out.mapped.map_ms + extract_ms;
   out.mapped.stations.timings_ms["map"] = out.map_ms;

@@ -20,6 +20,7 @@ struct DatasetMapping {
   MappedSequence mapped;
   double detect_ms = 0.0;                // all frames' pipeline totals
   double map_ms = 0.0;                   // everything beyond detection (wall samples, refinement, map)
+  bool cancelled = false;                // `progress` asked to stop: no map was built
 };
 
 // The camera-to-world pose of every frame (explicit, else forward kinematics). InputError naming
@@ -27,9 +28,11 @@ struct DatasetMapping {
 std::vector<Eigen::Isometry3d> dataset_poses(const Dataset& ds);
 
 // `pipeline` carries the parameters and camera up; its world up is set to the dataset's.
-// `progress(k)` is called after frame k-1 (k = 1..n). InputError for an empty dataset or a frame
-// without a pose; a bad frame's InputError names it.
+// `progress(k)` is called after frame k-1 (k = 1..n); returning false stops the detection and
+// returns a result marked cancelled. InputError for an empty dataset or a frame without a pose;
+// a bad frame's InputError names it.
+using MappingProgress = std::function<bool(std::size_t done)>;
 DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_poses,
-                           const std::function<void(std::size_t)>& progress = {});
+                           const MappingProgress& progress = {});
 
 }  // namespace tunnelmap

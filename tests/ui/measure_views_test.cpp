@@ -10,6 +10,8 @@
 #include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QProgressBar>
+#include <QUndoStack>
 #include <QAction>
 #include <QRegularExpression>
 #include <QtTest/QtTest>
@@ -21,7 +23,9 @@
 #include "tests/ui/synthetic_tunnel.h"
 #include "ui/cross_section_panel.h"
 #include "ui/depth_view_widget.h"
+#include "core/tunnel/tunnel_options.h"
 #include "ui/main_window.h"
+#include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
 #include "ui/view3d_widget.h"
 #include <QFile>
@@ -501,6 +505,54 @@ class MapReviewTest : public QObject {
     const QString err = QString::fromUtf8(bad.readAllStandardError());
     QVERIFY2(err.contains("000000.png") && err.contains("needs a posed dataset"), qPrintable(err));
     QVERIFY(!QFile::exists(dir_.filePath("no.png")));
+  }
+
+  // Map tunnel shows its progress and says how many frames it used; Cancel keeps the previous
+  // map. A new input forgets the map, the cut and the design typed for the previous one (one
+  // undo step brings the design back).
+  void mapTunnelProgressCancelAndANewInputForgetsTheMap() {
+    tunnelmap::ui::MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QSignalSpy shown(&w, &tunnelmap::ui::MainWindow::frameShown);
+    QVERIFY(w.open_input(walk_));
+    QVERIFY(shown.wait(30000));
+    tunnelmap::Parameters design = w.parameter_panel()->parameters();
+    design.set(tunnelmap::tunnel_keys::design_width_m, 0.84);
+    design.set(tunnelmap::tunnel_keys::design_height_m, 1.30);
+    w.parameter_panel()->set_parameters(design, "design");
+
+    QSignalSpy mapped(&w, &tunnelmap::ui::MainWindow::tunnelMapped);
+    w.map_tunnel();
+    auto* progress = w.findChild<QProgressBar*>();
+    QVERIFY(progress && progress->isVisible());
+    QCOMPARE(progress->maximum(), 17);  // 16 frames and the map
+    QVERIFY(mapped.wait(120000));
+    QCOMPARE(mapped.at(0).at(0).toBool(), true);
+    QVERIFY(!progress->isVisible());
+    QVERIFY2(w.status_text().contains(QRegularExpression("from \\d+ of 16 frame")), qPrintable(w.status_text()));
+    const std::size_t stations = w.profile()->map().stations.size();
+
+    w.map_tunnel();
+    w.cancel_sequence();
+    QVERIFY(mapped.wait(120000));
+    QCOMPARE(mapped.at(1).at(0).toBool(), false);
+    QVERIFY2(w.status_text().contains("cancelled"), qPrintable(w.status_text()));
+    QCOMPARE(w.profile()->map().stations.size(), stations);
+    QVERIFY(w.export_station_csv(dir_.filePath("kept.csv")));
+
+    QVERIFY(w.open_input(QString(TUNNELMAP_SOURCE_DIR) + "/resources/sample/lab/depth/000000.png"));
+    QVERIFY(shown.wait(30000));
+    QVERIFY(w.profile()->map().stations.empty());
+    QVERIFY(!w.export_station_csv(dir_.filePath("stale.csv")));
+    QVERIFY(!w.show_station(1.0));
+    const auto& p = w.parameter_panel()->parameters();
+    QCOMPARE(p.get(tunnelmap::tunnel_keys::design_width_m), 0.0);
+    QCOMPARE(p.get(tunnelmap::tunnel_keys::design_height_m), 0.0);
+    QVERIFY(w.cross_section()->view()->section().design == std::nullopt);
+    w.parameter_panel()->undo_stack()->undo();
+    QCOMPARE(w.parameter_panel()->parameters().get(tunnelmap::tunnel_keys::design_width_m), 0.84);
   }
 
   void mapTunnelOnAPlainFrameSaysWhy() {
