@@ -104,26 +104,39 @@ void CrossSectionView::mousePressEvent(QMouseEvent* e) {
   update();
 }
 
+namespace {
+
+QString metres(std::optional<double> v) { return v ? QString::number(*v, 'f', 3) + " m" : QObject::tr("–"); }
+
+// A deviation only of a value measured in the cut, or of the frame's measured or context value;
+// a value filled from the design is labelled so, never "0.0 mm" off.
+QString deviation(std::optional<double> cut, double fitted, DimensionSource source, double design) {
+  if (cut) return QObject::tr("%1 mm").arg((*cut - design) * 1000.0, 0, 'f', 1);
+  if (source == DimensionSource::Design) return QObject::tr("from design");
+  if (source == DimensionSource::Unseen) return QObject::tr("unknown");
+  return QObject::tr("%1 mm (frame fit)").arg((fitted - design) * 1000.0, 0, 'f', 1);
+}
+
+}  // namespace
+
+// The size is the cut's own (its walls' points in the slab); the frame's fitted rectangle, drawn
+// too, is named as such: across a change of section the two differ.
 QString CrossSectionView::caption() const {
   QString s = tr("station %1 m, slab \u00b1%2 mm, %3 points")
                   .arg(section_.station_m, 0, 'f', 2)
                   .arg(section_.half_thickness_m * 1000.0, 0, 'f', 0)
                   .arg(section_.points.size());
+  s += tr("\ncut: width %1, height %2").arg(metres(section_.cut_width_m), metres(section_.cut_height_m));
   if (!section_.fitted) return s + tr("\nno fitted rectangle here (tunnel not detected)");
-  s += tr("\nwidth %1 m, height %2 m").arg(section_.fitted->width(), 0, 'f', 3).arg(section_.fitted->height(), 0, 'f', 3);
+  s += tr("\nframe fit: %1 \u00d7 %2 m").arg(section_.fitted->width(), 0, 'f', 3).arg(section_.fitted->height(), 0, 'f', 3);
   if (section_.design) {
-    // A deviation only of a measured or context value; a value filled from the design is
-    // labelled so, never "0.0 mm" off.
-    const auto deviation = [](double value, double design, DimensionSource source) {
-      if (source == DimensionSource::Design) return tr("from design");
-      if (source == DimensionSource::Unseen) return tr("unknown");
-      return tr("%1 mm").arg((value - design) * 1000.0, 0, 'f', 1);
-    };
-    s += tr("; design %1 \u00d7 %2 m: width %3, height %4")
+    s += tr("\ndesign %1 \u00d7 %2 m: width %3, height %4")
              .arg(section_.design->width(), 0, 'f', 3)
              .arg(section_.design->height(), 0, 'f', 3)
-             .arg(deviation(section_.fitted->width(), section_.design->width(), section_.width_source))
-             .arg(deviation(section_.fitted->height(), section_.design->height(), section_.height_source));
+             .arg(deviation(section_.cut_width_m, section_.fitted->width(), section_.width_source,
+                            section_.design->width()))
+             .arg(deviation(section_.cut_height_m, section_.fitted->height(), section_.height_source,
+                            section_.design->height()));
   }
   return s;
 }

@@ -1,5 +1,7 @@
 #include "core/tunnel/cross_section.h"
 
+#include "core/util/median.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -60,6 +62,29 @@ StationRange visible_stations(const TunnelMap& map) {
   return {std::max(0.0, std::min(a, b)), std::max(0.0, std::max(a, b))};
 }
 
+namespace {
+
+constexpr std::size_t kMinCutWallPoints = 20;  // fewer: a few stray pixels, not a wall
+
+// Median `across` (side walls) or `up` (roof, floor) of one wall's points in the slab.
+std::optional<double> wall_position(const std::vector<SectionPoint>& points, WallClass wall) {
+  const bool side = wall == WallClass::Left || wall == WallClass::Right;
+  std::vector<double> at;
+  for (const SectionPoint& p : points)
+    if (p.cls == wall) at.push_back(side ? p.at.x() : p.at.y());
+  if (at.size() < kMinCutWallPoints) return std::nullopt;
+  return median_of_measured(std::move(at));
+}
+
+void measure_cut(CrossSection& s) {
+  const auto left = wall_position(s.points, WallClass::Left), right = wall_position(s.points, WallClass::Right);
+  const auto bottom = wall_position(s.points, WallClass::Bottom), top = wall_position(s.points, WallClass::Top);
+  if (left && right) s.cut_width_m = *right - *left;
+  if (bottom && top) s.cut_height_m = *top - *bottom;
+}
+
+}  // namespace
+
 CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& planes, const TunnelMap& map,
                            double station_m, double half_thickness_m, std::optional<double> design_width_m,
                            std::optional<double> design_height_m, std::size_t max_points) {
@@ -89,6 +114,7 @@ CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& pla
     for (std::size_t k = 0; k < max_points; ++k) kept.push_back(out.points[static_cast<std::size_t>(k * step)]);
     out.points.swap(kept);
   }
+  measure_cut(out);
   out.fitted = fitted_rect(map, f);
   if (out.fitted) {
     out.width_source = map.width_source;

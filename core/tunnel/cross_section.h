@@ -35,6 +35,10 @@ struct CrossSection {
   // Where the fitted rectangle's width and height come from (the map's sources): a dimension
   // filled from the design equals it by construction and is no deviation from it.
   DimensionSource width_source = DimensionSource::Unseen, height_source = DimensionSource::Unseen;
+  // The cut's own size, from the slab's wall points (the median position of each wall's
+  // points); empty where a wall has too few points in the slab. The fitted rectangle describes
+  // the frame's walls as a whole, which may lie across a change of section.
+  std::optional<double> cut_width_m, cut_height_m;
 };
 
 // Stations seen by a map: the visible axial extent as distances ahead of the camera.

@@ -79,16 +79,21 @@ class CrossSectionTest : public QObject {
     QCOMPARE(std::round(s.fitted->height() * 1000), 800.0);
     QVERIFY(s.points.size() > 100);
     const QString caption = panel.view()->caption();
-    QVERIFY2(caption.contains("width 1.000 m, height 0.800 m"), qPrintable(caption));
+    QVERIFY2(caption.contains("cut: width 1.000 m, height 0.800 m"), qPrintable(caption));
+    QVERIFY2(caption.contains("frame fit: 1.000 \u00d7 0.800 m"), qPrintable(caption));
     QVERIFY2(caption.contains("width 20.0 mm, height 20.0 mm"), qPrintable(caption));
-    // A height filled from the design is labelled so, never "0.0 mm" off.
+    // A height filled from the design (roof and floor not seen: their planes are no walls) is
+    // labelled so, never "0.0 mm" off.
     auto from_design = std::make_shared<tunnelmap::scene::ProcessedFrame>(*tunnel());
     from_design->result.map.status = tunnelmap::TunnelStatus::Partial;
     from_design->result.map.height_source = tunnelmap::DimensionSource::Design;
+    for (auto& c : from_design->result.map.plane_classes)
+      if (c == tunnelmap::WallClass::Top || c == tunnelmap::WallClass::Bottom) c = tunnelmap::WallClass::Unassigned;
     panel.set_frame(from_design, 0.98, 0.78);
     const QString design_caption = panel.view()->caption();
     QVERIFY2(design_caption.contains("width 20.0 mm, height from design"), qPrintable(design_caption));
     QVERIFY2(!design_caption.contains("height 0.0 mm"), qPrintable(design_caption));
+    QVERIFY2(design_caption.contains("cut: width 1.000 m, height –"), qPrintable(design_caption));
     panel.set_frame(tunnel(), 0.98, 0.78);
 
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR"))
@@ -411,6 +416,9 @@ class MapReviewTest : public QObject {
       QVERIFY2(std::abs(cut.fitted->width() - st->width_m) < 0.01,
                qPrintable(QString("station %1: cut %2 vs map %3").arg(st->station_m).arg(cut.fitted->width()).arg(st->width_m)));
       QVERIFY(cut.station_m > 0.4 && cut.station_m < 4.6);
+      QVERIFY(cut.cut_width_m.has_value());  // the caption's width: the cut's own walls
+      QVERIFY2(std::abs(*cut.cut_width_m - st->width_m) < 0.01,
+               qPrintable(QString("station %1: cut walls %2 vs map %3").arg(st->station_m).arg(*cut.cut_width_m).arg(st->width_m)));
     }
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
   }

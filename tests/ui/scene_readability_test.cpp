@@ -194,6 +194,29 @@ TEST(SceneReadability, InANarrowViewTheLegendMovesUpAndLeavesTheWidthLabelClear)
   EXPECT_FALSE(legend.at_top());
 }
 
+// Whatever the view's shape, the legend takes the corner where it covers no distance, width or
+// height label (in the GUI's 3D view at 1600 x 1000 it covered the "3 m" of the grid).
+TEST(SceneReadability, TheLegendNeverCoversALabel) {
+  const auto pf = test::make_synthetic_tunnel(1.0, 0.8, 3.0);
+  for (const auto& size : std::vector<std::array<int, 2>>{{520, 620}, {640, 400}, {320, 475}, {1280, 720}}) {
+    render::OsMesaWindow window(size[0], size[1]);
+    scene::TunnelScene sc;
+    sc.update(pf.scene_data());
+    window.add_renderer(sc.renderer());
+    sc.apply_view(scene::ViewPreset::Along);
+    window.render();
+    const std::vector<scene::ScreenBox> labels = sc.label_boxes();
+    ASSERT_GE(labels.size(), 3u) << size[0] << "x" << size[1];  // grid metres, width, height
+    for (const scene::ScreenBox& label : labels)
+      EXPECT_FALSE(sc.legend().box().overlaps(label))
+          << size[0] << "x" << size[1] << ": label at " << label.x0 << "," << label.y0;
+  }
+  // A label in the lower-right corner sends the legend elsewhere.
+  scene::SceneLegend legend(vtkSmartPointer<vtkRenderer>::New());
+  legend.fit(1280, 720, {{1100, 20, 1270, 60}});
+  EXPECT_FALSE(!legend.at_top() && !legend.at_left());
+}
+
 TEST(SceneReadability, TheFloorCarriesADistanceGridLabelledEveryMetre) {
   // A 3 m tunnel ahead of the camera: lines at 0.5 m steps over the floor's visible extent.
   const auto pf = test::make_synthetic_tunnel(1.0, 0.8, 3.0);

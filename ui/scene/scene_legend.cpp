@@ -90,17 +90,28 @@ void SceneLegend::set_background(bool on) {
   actor_->SetBackgroundOpacity(0.9);
 }
 
-void SceneLegend::fit(int width, int height) {
+void SceneLegend::fit(int width, int height, const std::vector<ScreenBox>& labels) {
   if (width <= 0 || height <= 0) return;
+  constexpr int kMargin = 8;
   const int row = legend_row_px(height);
   box_w_ = std::min(width / 2, row * 8);  // "unassigned" plus its swatch
-  box_h_ = std::min(height - 8, row * std::max(1, entries()) + 6);
-  const double w = static_cast<double>(box_w_) / width, h = static_cast<double>(box_h_) / height;
+  box_h_ = std::min(height - kMargin, row * std::max(1, entries()) + 6);
   // The width label sits at the middle of the floor's edge, about 150 px wide: in a view
   // narrower than twice the box plus that, a box in the lower-right corner would cover it.
-  at_top_ = width < 2 * box_w_ + 200;
-  actor_->GetPositionCoordinate()->SetValue(1.0 - w - 8.0 / width, at_top_ ? 1.0 - h - 8.0 / height : 8.0 / height);
-  actor_->GetPosition2Coordinate()->SetValue(w, h);
+  const bool top_first = width < 2 * box_w_ + 200;
+  const bool corners[4][2] = {{top_first, false}, {!top_first, false}, {false, true}, {true, true}};  // {top, left}
+  int fewest = -1;
+  for (const auto& c : corners) {
+    const double x0 = c[1] ? kMargin : width - kMargin - box_w_;
+    const double y0 = c[0] ? height - kMargin - box_h_ : kMargin;
+    const ScreenBox candidate{x0, y0, x0 + box_w_, y0 + box_h_};
+    int covered = 0;
+    for (const ScreenBox& label : labels) covered += candidate.overlaps(label);
+    if (fewest >= 0 && covered >= fewest) continue;
+    fewest = covered, at_top_ = c[0], at_left_ = c[1], box_ = candidate;
+  }
+  actor_->GetPositionCoordinate()->SetValue(box_.x0 / width, box_.y0 / height);
+  actor_->GetPosition2Coordinate()->SetValue(static_cast<double>(box_w_) / width, static_cast<double>(box_h_) / height);
 }
 
 }  // namespace tunnelmap::scene

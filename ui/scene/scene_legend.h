@@ -7,7 +7,15 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <vector>
+
 namespace tunnelmap::scene {
+
+// A text label's extent on screen, in display pixels (origin lower-left).
+struct ScreenBox {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool overlaps(const ScreenBox& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
 
 struct LegendLayers {
   bool planes = false, boundary = false, traversable = false, forbidden = false;
@@ -20,10 +28,13 @@ class SceneLegend {
   void set_layers(const LegendLayers& shown);
   void set_visible(bool visible);
   void set_background(bool on);
-  // Places the box in the lower-right corner of a `width` x `height` viewport (pixels), or in
-  // the upper-right one when the view is too narrow for it to clear the width label.
-  void fit(int width, int height);
+  // Places the box in a corner of a `width` x `height` viewport (pixels): the one that covers
+  // the fewest of `labels`; among equals the lower-right, or the upper-right when the view is
+  // too narrow for the box to clear the width label, then the left corners.
+  void fit(int width, int height, const std::vector<ScreenBox>& labels = {});
   bool at_top() const { return at_top_; }
+  bool at_left() const { return at_left_; }
+  ScreenBox box() const { return box_; }  // after the last fit()
 
   int entries() const { return actor_->GetNumberOfEntries(); }
   vtkLegendBoxActor* actor() const { return actor_; }
@@ -37,7 +48,8 @@ class SceneLegend {
   vtkSmartPointer<vtkLegendBoxActor> actor_;
   bool visible_ = true;
   int box_w_ = 0, box_h_ = 0;
-  bool at_top_ = false;
+  bool at_top_ = false, at_left_ = false;
+  ScreenBox box_;
 };
 
 // Row height of the legend for a viewport `height` pixels high.

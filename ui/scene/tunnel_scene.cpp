@@ -1,5 +1,7 @@
 #include "ui/scene/tunnel_scene.h"
 
+#include <vtkStringArray.h>
+
 #include <vtkCallbackCommand.h>
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
@@ -9,6 +11,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkStringArray.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
@@ -96,8 +99,9 @@ TunnelScene::TunnelScene() {
   fit->SetClientData(this);
   fit->SetCallback([](vtkObject* caller, unsigned long, void* self, void*) {
     auto* renderer = static_cast<vtkRenderer*>(caller);
+    auto* scene = static_cast<TunnelScene*>(self);
     const int* size = renderer->GetSize();
-    static_cast<TunnelScene*>(self)->legend_->fit(size[0], size[1]);
+    scene->legend_->fit(size[0], size[1], scene->label_boxes());
   });
   fit_observer_ = renderer_->AddObserver(vtkCommand::StartEvent, fit);
   clear();
@@ -124,6 +128,32 @@ void TunnelScene::add_zone_outlines() {
   };
   traversable_outline_ = outline(Layer::Traversable, kTraversableRed);
   forbidden_outline_ = outline(Layer::Forbidden, kForbiddenAmber);
+}
+
+// Where the visible text labels (distance grid, width and height) are on screen, so that the
+// legend can keep clear of them. Their extent is estimated from the text, about 0.6 of the font
+// size per character, on either side of the point (whichever way the mapper justifies it).
+std::vector<ScreenBox> TunnelScene::label_boxes() const {
+  std::vector<ScreenBox> boxes;
+  for (const vtkSmartPointer<vtkActor2D>& actor : {grid_labels_, dimension_labels_}) {
+    if (!actor->GetVisibility()) continue;
+    auto* mapper = static_cast<vtkLabeledDataMapper*>(actor->GetMapper());
+    auto* poly = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+    auto* text = poly ? vtkStringArray::SafeDownCast(poly->GetPointData()->GetAbstractArray("label")) : nullptr;
+    if (!text) continue;
+    const double font = mapper->GetLabelTextProperty()->GetFontSize();
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+      double p[3];
+      poly->GetPoint(i, p);
+      renderer_->SetWorldPoint(p[0], p[1], p[2], 1.0);
+      renderer_->WorldToDisplay();
+      const double* d = renderer_->GetDisplayPoint();
+      if (d[2] < 0.0 || d[2] > 1.0) continue;  // behind the camera or clipped: not drawn
+      const double half_w = 0.6 * font * static_cast<double>(text->GetValue(i).size()) + 4.0, half_h = 1.2 * font;
+      boxes.push_back({d[0] - half_w, d[1] - half_h, d[0] + half_w, d[1] + half_h});
+    }
+  }
+  return boxes;
 }
 
 vtkSmartPointer<vtkActor2D> TunnelScene::add_labels(const Rgb& color, int font_size) {

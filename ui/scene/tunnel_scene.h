@@ -60,6 +60,7 @@ class TunnelScene {
   ViewPreset view() const { return view_; }
 
   const SceneLegend& legend() const { return *legend_; }
+  std::vector<ScreenBox> label_boxes() const;  // the visible labels' extents on screen
   // The width and height text (Boundary layer); its input holds the labels the view shows.
   vtkActor2D* dimension_label_actor() const { return dimension_labels_; }
 

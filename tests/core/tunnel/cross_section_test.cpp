@@ -99,5 +99,46 @@ TEST(CrossSection, AMissingWallIsPlacedFromTheKnownSize) {
   EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05).fitted.has_value());
 }
 
+// A frame that sees a change of section: 0.84 x 1.30 m up to x = 3 m, then 0.78 x 1.26 m. The
+// frame's fitted rectangle is one size for the whole frame; each cut measures its own walls.
+TEST(CrossSection, TheCutMeasuresItsOwnWallsAcrossAChangeOfSection) {
+  const Eigen::Vector3d near_lo{-1.0, -0.42, -0.65}, near_hi{3.0, 0.42, 0.65};
+  const Eigen::Vector3d far_lo{3.0, -0.39, -0.63}, far_hi{9.0, 0.39, 0.63};
+  const auto pose = test::look_at({0, 0, 0}, {1, 0, 0});
+  // Open where the two meet: no end wall at x = 3 m (box_room's planes are -x, +x, -y, +y, -z, +z).
+  auto near_walls = test::box_room(near_lo, near_hi), far_walls = test::box_room(far_lo, far_hi);
+  near_walls.erase(near_walls.begin() + 1);
+  far_walls.erase(far_walls.begin());
+  test::SyntheticFrame near = test::render_planes(near_walls, pose, near_lo, near_hi);
+  const test::SyntheticFrame far = test::render_planes(far_walls, pose, far_lo, far_hi);
+  for (std::size_t i = 0; i < near.frame.depth.size(); ++i) {  // the nearer surface of the two
+    const float a = near.frame.depth[i], b = far.frame.depth[i];
+    if (a <= 0.0f || (b > 0.0f && b < a)) near.frame.depth[i] = b;
+  }
+  near.frame.pose = pose;
+  FrameResult result;
+  Pipeline pipeline;
+  pipeline.run(near.frame, result);
+  ASSERT_TRUE(result.map.detected) << result.map.reason;
+  const CrossSection before = cross_section(result.cloud, result.planes, result.map, 1.5, 0.05);
+  const CrossSection after = cross_section(result.cloud, result.planes, result.map, 5.0, 0.1);
+  ASSERT_TRUE(before.cut_width_m && before.cut_height_m);
+  ASSERT_TRUE(after.cut_width_m && after.cut_height_m);
+  EXPECT_NEAR(*before.cut_width_m, 0.84, 0.005);
+  EXPECT_NEAR(*before.cut_height_m, 1.30, 0.005);
+  EXPECT_NEAR(*after.cut_width_m, 0.78, 0.005);
+  EXPECT_NEAR(*after.cut_height_m, 1.26, 0.005);
+  // One of the two cuts is not the frame's size: the fitted rectangle cannot stand for both.
+  ASSERT_TRUE(before.fitted.has_value());
+  EXPECT_GT(std::max(std::abs(before.fitted->width() - 0.84), std::abs(before.fitted->width() - 0.78)), 0.02);
+}
+
+TEST(CrossSection, ACutWithoutAWallHasNoSizeThere) {
+  const BoxTunnel t;
+  const CrossSection beyond = cross_section(t.result.cloud, t.result.planes, t.result.map, 30.0, 0.05);
+  EXPECT_FALSE(beyond.cut_width_m.has_value());
+  EXPECT_FALSE(beyond.cut_height_m.has_value());
+}
+
 }  // namespace
 }  // namespace tunnelmap
