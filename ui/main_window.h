@@ -41,6 +41,7 @@ class QToolButton;
 namespace tunnelmap::ui {
 
 class CrossSectionPanel;
+class MapSectionsPanel;
 class DepthViewWidget;
 class ProfilePlot;
 class RecordingOpener;
@@ -158,6 +159,7 @@ class MainWindow : public QMainWindow {
   // frame sees it (or no map of this input).
   bool show_station(double station_m);
   CrossSectionPanel* cross_section() const { return cross_section_; }
+  MapSectionsPanel* map_sections() const { return sections_; }
   ProfilePlot* profile() const { return profile_; }
 
  signals:
@@ -205,6 +207,7 @@ class MainWindow : public QMainWindow {
   void show_fused(bool reset_camera);  // the fused result at the poses View > Refined poses chooses
   void leave_fused_view();
   void build_review_docks(QMenu* processing, QMenu* view);
+  void build_sections_dock();
   void review_frame_shown();  // the cross-section follows the shown frame
   void finish_map_tunnel(const std::shared_ptr<const FrameSource>& source, const DatasetMapping& result,
                          const nlohmann::json& params, const QString& error);
@@ -215,6 +218,8 @@ class MainWindow : public QMainWindow {
   ProfilePlot* profile_ = nullptr;
   QDockWidget* cross_section_dock_ = nullptr;
   QDockWidget* profile_dock_ = nullptr;
+  MapSectionsPanel* sections_ = nullptr;
+  QDockWidget* sections_dock_ = nullptr;
   std::shared_ptr<ReviewMap> review_map_;
   int review_frame_ = -1;
   bool map_running_ = false;

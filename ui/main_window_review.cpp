@@ -19,6 +19,7 @@
 #include "core/tunnel/tunnel_options.h"
 #include "ui/cross_section_panel.h"
 #include "ui/depth_view_widget.h"
+#include "ui/map_sections_panel.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
@@ -69,6 +70,7 @@ void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
     results->raise();
   }
   connect(profile_, &ProfilePlot::stationClicked, this, [this](double s) { show_station(s); });
+  build_sections_dock();
   connect(cross_section_->view(), &CrossSectionView::measured, this, [this](double m) {
     status_label_->setText(tr("Cross-section: %1 mm between the two picks").arg(m * 1000.0, 0, 'f', 1));
   });
@@ -98,6 +100,21 @@ void MainWindow::build_review_docks(QMenu* processing, QMenu* view) {
   });
   view->addAction(cross_section_dock_->toggleViewAction());
   view->addAction(profile_dock_->toggleViewAction());
+  view->addAction(sections_dock_->toggleViewAction());
+}
+
+// The map's sections, out-of-tolerance stations and plates, beside the profile they select on.
+void MainWindow::build_sections_dock() {
+  sections_ = new MapSectionsPanel(this);
+  sections_->setObjectName("mapSections");
+  sections_dock_ = new QDockWidget(tr("Sections"), this);
+  sections_dock_->setObjectName("sectionsDock");
+  sections_dock_->setWidget(sections_);
+  addDockWidget(Qt::BottomDockWidgetArea, sections_dock_);
+  splitDockWidget(profile_dock_, sections_dock_, Qt::Horizontal);
+  resizeDocks({sections_dock_}, {440}, Qt::Horizontal);
+  sections_dock_->hide();  // until there is a map
+  connect(sections_, &MapSectionsPanel::stationChosen, this, [this](double s) { show_station(s); });
 }
 
 void MainWindow::review_frame_shown() {
@@ -124,6 +141,7 @@ void MainWindow::forget_review_state() {
   *review_map_ = ReviewMap{};
   review_frame_ = -1;
   profile_->clear();
+  sections_->clear();
   cross_section_->set_frame(nullptr, std::nullopt, std::nullopt);
   view3d_->clear_measurement();
   depth_view_->clear_measurement();
@@ -195,6 +213,8 @@ void MainWindow::finish_map_tunnel(const std::shared_ptr<const FrameSource>& sou
   profile_->set_map(m);
   profile_dock_->show();
   profile_dock_->raise();
+  sections_->set_map(m);
+  sections_dock_->show();
   status_label_->setText(tr("Tunnel mapped from %1 of %2 frame(s): %3 stations over %4 m, %5 section(s), "
                             "%6 out of tolerance")
                              .arg(m.frames_used)
@@ -215,6 +235,7 @@ bool MainWindow::show_station(double station_m) {
   if (review_map_->source != source_ || profile_->map().stations.empty()) return false;
   const auto view = frame_for_station(profile_->map(), review_map_->poses, review_map_->detected, station_m);
   profile_->set_current_station(station_m);
+  sections_->select_station(station_m);
   if (!view) {
     status_label_->setText(tr("No frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2));
     return false;

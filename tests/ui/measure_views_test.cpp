@@ -12,6 +12,7 @@
 #include <QSlider>
 #include <QProgressBar>
 #include <QUndoStack>
+#include <QTreeWidget>
 #include <QAction>
 #include <QRegularExpression>
 #include <QtTest/QtTest>
@@ -25,6 +26,7 @@
 #include "ui/depth_view_widget.h"
 #include "core/tunnel/tunnel_options.h"
 #include "ui/main_window.h"
+#include "ui/map_sections_panel.h"
 #include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
 #include "ui/view3d_widget.h"
@@ -420,6 +422,26 @@ class MapReviewTest : public QObject {
       QVERIFY2(std::abs(*cut.cut_width_m - st->width_m) < 0.01,
                qPrintable(QString("station %1: cut walls %2 vs map %3").arg(st->station_m).arg(*cut.cut_width_m).arg(st->width_m)));
     }
+    // The sections dock lists both sections; a click on the second shows its middle, and the
+    // profile's station selects the row it lies in.
+    auto* sections = w.map_sections();
+    QCOMPARE(sections->section_rows(), 2);
+    QTreeWidgetItem* second = sections->tree()->topLevelItem(0)->child(1);
+    sections->tree()->scrollToItem(second);
+    QTest::qWait(100);  // the dock shown after the map is laid out
+    QVERIFY(sections->isVisible());
+    const QPoint on_second = sections->tree()->visualItemRect(second).topLeft() + QPoint(30, 5);
+    QVERIFY2(sections->tree()->viewport()->rect().contains(on_second),
+             qPrintable(QString("row at %1,%2 in a %3x%4 list").arg(on_second.x()).arg(on_second.y())
+                            .arg(sections->tree()->viewport()->width()).arg(sections->tree()->viewport()->height())));
+    const int before = w.frame_index();
+    QTest::mouseClick(sections->tree()->viewport(), Qt::LeftButton, {}, on_second);
+    QVERIFY(w.profile()->current_station().has_value());
+    QVERIFY2(std::abs(*w.profile()->current_station() - 0.5 * (m.sections[1].from_m + m.sections[1].to_m)) < 1e-6,
+             qPrintable(QString::number(*w.profile()->current_station())));
+    if (w.frame_index() != before) QVERIFY(shown.wait(30000));
+    QVERIFY(w.show_station(m.sections[0].from_m + 0.3));
+    QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
   }
 

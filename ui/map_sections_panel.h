@@ -1,0 +1,44 @@
+#pragma once
+// The mapped tunnel as lists an inspector works down: its sections (extent, size, frames), the
+// stations out of tolerance (with their deviation from the design) and the diaphragm plates.
+// A click on a row asks for that station (the window shows the frame that sees it and cuts the
+// cross-section there, as a click on the profile does); the profile's station selects the row.
+#include <QWidget>
+
+#include "core/mapping/station_map.h"
+
+class QLabel;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace tunnelmap::ui {
+
+class MapSectionsPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit MapSectionsPanel(QWidget* parent = nullptr);
+
+  void set_map(const StationMap& map);
+  void clear();
+  // Selects the section containing `station_m` (or that out-of-tolerance station), no signal.
+  void select_station(double station_m);
+  QTreeWidget* tree() const { return tree_; }
+  int section_rows() const;
+  int out_of_tolerance_rows() const;
+
+ signals:
+  void stationChosen(double station_m);
+
+ private:
+  void add_sections(const StationMap& map);
+  void add_out_of_tolerance(const StationMap& map);
+  void add_diaphragms(const StationMap& map);
+
+  QLabel* summary_;
+  QTreeWidget* tree_;
+  QTreeWidgetItem* sections_ = nullptr;
+  QTreeWidgetItem* out_of_tolerance_ = nullptr;
+  QTreeWidgetItem* diaphragms_ = nullptr;
+};
+
+}  // namespace tunnelmap::ui
