@@ -208,6 +208,7 @@ class MainWindow : public QMainWindow {
   void leave_fused_view();
   void build_review_docks(QMenu* processing, QMenu* view);
   void build_sections_dock();
+  void review_map_pending_station(int frame, std::optional<double> ahead_m);  // the cut's station once `frame` shows
   void review_frame_shown();  // the cross-section follows the shown frame
   void finish_map_tunnel(const std::shared_ptr<const FrameSource>& source, const DatasetMapping& result,
                          const nlohmann::json& params, const QString& error);

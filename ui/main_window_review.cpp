@@ -33,6 +33,7 @@ struct ReviewMap {
   std::vector<Eigen::Isometry3d> poses;       // per frame, as the map used them
   std::vector<bool> detected;
   std::optional<double> pending_ahead;        // cut here once the chosen frame is shown
+  int pending_frame = -1;                     // ... that frame
   nlohmann::json params;                      // the parameters the map was made with
 };
 
@@ -129,7 +130,7 @@ void MainWindow::review_frame_shown() {
   const double w = p.get(tunnel_keys::design_width_m), h = p.get(tunnel_keys::design_height_m);
   const std::optional<double> dw = positive(w), dh = positive(h);
   cross_section_->set_frame(current_, dw && dh ? dw : std::nullopt, dw && dh ? dh : std::nullopt);
-  if (review_map_->pending_ahead) {
+  if (review_map_->pending_ahead && review_map_->pending_frame == last_.frame_index) {
     cross_section_->set_station(*review_map_->pending_ahead);
     review_map_->pending_ahead.reset();
   }
@@ -145,6 +146,11 @@ void MainWindow::forget_review_state() {
   cross_section_->set_frame(nullptr, std::nullopt, std::nullopt);
   view3d_->clear_measurement();
   depth_view_->clear_measurement();
+}
+
+void MainWindow::review_map_pending_station(int frame, std::optional<double> ahead_m) {
+  review_map_->pending_frame = frame;
+  review_map_->pending_ahead = ahead_m;
 }
 
 bool MainWindow::map_running() const { return map_running_; }
@@ -246,7 +252,7 @@ bool MainWindow::show_station(double station_m) {
     cross_section_->set_station(view->ahead_m);
     return true;
   }
-  review_map_->pending_ahead = view->ahead_m;
+  review_map_pending_station(view->frame, view->ahead_m);
   return select_frame(view->frame);
 }
 

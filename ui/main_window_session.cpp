@@ -28,6 +28,7 @@
 #include "core/io/png_folder.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "ui/cross_section_panel.h"
 #include "ui/main_window.h"
 #include "ui/parameter_panel.h"
 #include "ui/review_session.h"
@@ -153,6 +154,9 @@ bool MainWindow::save_session(const QString& path) {
       for (const Eigen::Vector3d& p : m.picks) s.measurements.back().push_back({p.x(), p.y(), p.z()});
     }
     if (takes_user_intrinsics(input_path_)) s.intrinsics = read_options_for(input_path_).intrinsics;
+    s.preset_params = preset_params_;
+    s.mapped = mapped_tunnel().has_value();
+    if (current_ && current_->result.map.detected) s.cross_section_station_m = cross_section_->station();
     write_session_file(path.toStdString(), s);
   } catch (const std::exception& e) {
     show_error(QString::fromStdString(e.what()));
@@ -189,8 +193,8 @@ bool MainWindow::open_session(const QString& path) {
   if (!open_input(input)) return false;  // error shown; open_input keeps the state on failure
   session_->preset_path = QString::fromStdString(s.preset_path);
   preset_name_ = QString::fromStdString(s.preset_name);
-  preset_params_ = s.params;  // "(modified)" is relative to the session's values
-  if (!s.preset_path.empty()) {
+  preset_params_ = s.preset_params.value_or(s.params);  // what "(modified)" is relative to
+  if (!s.preset_params && !s.preset_path.empty()) {
     try {
       Parameters p;
       p.load_json_file(s.preset_path);
@@ -208,6 +212,7 @@ bool MainWindow::open_session(const QString& path) {
       if (a->isCheckable() && a->text() == tr(scene::layer_title(l))) a->setChecked(on);
     view3d_->set_layer_visible(l, on);
   }
+  review_map_pending_station(s.frame - 1, s.cross_section_station_m);
   select_frame(s.frame - 1);
   session_->pending_camera = s.camera;
   std::vector<scene::Measurement> measurements;  // each as saved, one or two points
@@ -218,6 +223,7 @@ bool MainWindow::open_session(const QString& path) {
   session_->pending_measurements = measurements;
   if (s.camera) apply_camera(view3d_->scene().renderer(), *s.camera);  // again after the frame
   update_preset_status();
+  if (s.mapped) map_tunnel();  // with the session's parameters, as it was made
   statusBar()->showMessage(tr("Opened review session %1").arg(path), 5000);
   return true;
 }

@@ -67,6 +67,9 @@ Json session_to_json(const ReviewSession& s) {
   j["format"] = kFormat;
   j["input"] = s.input;
   j["preset"] = {{"name", s.preset_name}, {"path", s.preset_path}};
+  if (s.preset_params) j["preset"]["params"] = s.preset_params->to_json();
+  j["review"] = {{"map", s.mapped}, {"cross_section_station_m", nullptr}};
+  if (s.cross_section_station_m) j["review"]["cross_section_station_m"] = *s.cross_section_station_m;
   j["params"] = s.params.to_json();
   j["method"] = method_name(s.method);
   if (s.camera)
@@ -92,6 +95,38 @@ Json session_to_json(const ReviewSession& s) {
   return j;
 }
 
+namespace {
+
+Parameters read_parameters(const Json& j, const std::string& what, const std::string& file) {
+  if (!j.is_object()) throw InputError(file, "\"" + what + "\" must be an object {KEY: VALUE}");
+  Parameters p;
+  try {
+    p.apply_json(j, file);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(file, e.what());
+  }
+  return p;
+}
+
+// "review": whether the tunnel was mapped, and the cut's station.
+void read_review(const Json& j, const std::string& file, ReviewSession& s) {
+  const std::string bad = "\"review\" must be {\"map\": true|false, \"cross_section_station_m\": number|null}";
+  if (!j.is_object()) throw InputError(file, bad);
+  if (j.contains("map")) {
+    if (!j["map"].is_boolean()) throw InputError(file, bad);
+    s.mapped = j["map"].get<bool>();
+  }
+  if (j.contains("cross_section_station_m") && !j["cross_section_station_m"].is_null()) {
+    const Json& v = j["cross_section_station_m"];
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0) throw InputError(file, bad);
+    s.cross_section_station_m = v.get<double>();
+  }
+}
+
+}  // namespace
+
 ReviewSession session_from_json(const Json& j, const std::string& file) {
   if (!j.is_object()) throw InputError(file, "not a review session (expected a JSON object)");
   const std::string format = read_string(j, "format", file, true);
@@ -109,17 +144,10 @@ ReviewSession session_from_json(const Json& j, const std::string& file) {
     const std::string name = read_string(p, "name", file, false);
     if (!name.empty()) s.preset_name = name;
     s.preset_path = read_string(p, "path", file, false);
+    if (p.contains("params")) s.preset_params = read_parameters(p["params"], "preset.params", file);
   }
-  if (j.contains("params")) {
-    if (!j["params"].is_object()) throw InputError(file, "\"params\" must be an object {KEY: VALUE}");
-    try {
-      s.params.apply_json(j["params"], file);
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw InputError(file, e.what());
-    }
-  }
+  if (j.contains("params")) s.params = read_parameters(j["params"], "params", file);
+  if (j.contains("review")) read_review(j["review"], file, s);
   if (j.contains("method")) {
     try {
       s.method = parse_method(read_string(j, "method", file, true));

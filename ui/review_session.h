@@ -36,6 +36,13 @@ struct ReviewSession {
   // 3D-view distance measurements, each 1 or 2 picked points (camera frame of the shown frame):
   // [{"points": [[x,y,z], [x,y,z]], "distance_m": d}] ("distance_m" written for readers only).
   std::vector<std::vector<std::array<double, 3>>> measurements;
+  // "preset": {"params": {...}}: the loaded preset's own values, so the "(modified)" mark is the
+  // same after reopening even if the preset file has moved or changed since.
+  std::optional<Parameters> preset_params;
+  // "review": {"map": true, "cross_section_station_m": 1.3}: Map tunnel had run (it runs again
+  // on open, with the session's parameters) and the cut's station ahead of the shown frame.
+  bool mapped = false;
+  std::optional<double> cross_section_station_m;
 };
 
 nlohmann::json session_to_json(const ReviewSession& s);

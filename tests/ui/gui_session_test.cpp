@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QProcess>
 #include <QPushButton>
 #include <QSettings>
@@ -26,7 +27,9 @@
 
 #include "core/util/build_paths.h"
 #include "sensors/openni/register_openni.h"
+#include "ui/cross_section_panel.h"
 #include "ui/main_window.h"
+#include "ui/profile_plot.h"
 #include "ui/message_log.h"
 #include "ui/parameter_panel.h"
 #include "ui/timeline_widget.h"
@@ -203,6 +206,53 @@ class GuiSessionTest : public QObject {
     for (QAction* a : w.findChildren<QAction*>())
       if (a->isCheckable() && a->text() == QObject::tr(tunnelmap::scene::layer_title(Layer::Planes)))
         QVERIFY(!a->isChecked());
+  }
+
+  // A session keeps the review as well as the view: the tunnel map (Map tunnel runs again on
+  // open), the cross-section's station and the preset's "(modified)" mark, even after the
+  // preset file is gone.
+  void sessionKeepsTheMapTheCutAndThePresetState() {
+    MainWindow w;
+    w.suppress_dialogs = true;
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(open_and_wait(w, kLab));
+    const QString preset = dir_.filePath("mine.json");
+    QVERIFY(QFile::copy(QString(TUNNELMAP_SOURCE_DIR) + "/resources/presets/lab.json", preset));
+    QVERIFY(w.load_preset(preset));
+    tunnelmap::Parameters p = w.parameter_panel()->parameters();
+    p.set("grow.angle_deg", 3.5);
+    w.parameter_panel()->set_parameters(p);
+    auto* preset_label = w.findChild<QLabel*>("presetLabel");
+    QVERIFY2(preset_label->text().contains("mine (modified)"), qPrintable(preset_label->text()));
+    QSignalSpy mapped(&w, &MainWindow::tunnelMapped);
+    w.map_tunnel();
+    QVERIFY(mapped.wait(120000));
+    QVERIFY(mapped.at(0).at(0).toBool());
+    const std::size_t stations = w.profile()->map().stations.size();
+    QVERIFY(stations > 5);
+    QVERIFY(wait_until([&] { return w.current() != nullptr; }));
+    w.cross_section()->set_station(1.7);
+    const double cut = w.cross_section()->station();
+    const QString session = dir_.filePath("mapped.json");
+    QVERIFY(w.save_session(session));
+    QFile f(session);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const nlohmann::json j = nlohmann::json::parse(f.readAll().toStdString());
+    QCOMPARE(j["review"]["map"].get<bool>(), true);
+    QCOMPARE(j["review"]["cross_section_station_m"].get<double>(), cut);
+    QCOMPARE(j["preset"]["params"]["grow.angle_deg"].get<double>(),
+             tunnelmap::Parameters().get("grow.angle_deg"));  // the preset's own value, not the edit
+
+    QVERIFY(QFile::remove(preset));
+    QVERIFY(open_and_wait(w, png_folder_));
+    QVERIFY(w.profile()->map().stations.empty());
+    QVERIFY(w.open_session(session));
+    QVERIFY(mapped.wait(120000));
+    QVERIFY(mapped.at(1).at(0).toBool());
+    QCOMPARE(w.profile()->map().stations.size(), stations);
+    QVERIFY(wait_until([&] { return std::abs(w.cross_section()->station() - cut) < 1e-9; }));
+    QVERIFY2(preset_label->text().contains("mine (modified)"), qPrintable(preset_label->text()));
   }
 
   void badSessionFileKeepsState() {
