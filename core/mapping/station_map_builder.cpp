@@ -495,7 +495,8 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   const auto t0 = std::chrono::steady_clock::now();
   StationMap out;
   out.options = options_;
-  const CentrelineFrame zero = line_.frame_at(0.0);
+  // A straight line is the first frame's axis through its camera (also when no frame was detected).
+  const CentrelineFrame zero = have_line_ ? line_.frame_at(0.0) : CentrelineFrame{0.0, origin_, axis_, up_};
   out.origin = zero.point;
   out.axis = zero.axis;
   out.up = zero.up;
