@@ -70,7 +70,7 @@ void score_sections(const StationMap& m, const TruthLine& line, const std::vecto
       truth_joints.push_back(rooms[k].from);
   std::vector<double> found;
   for (std::size_t k = 1; k < m.sections.size(); ++k)
-    found.push_back(line.station_of(m.origin + m.sections[k].from_m * m.axis));
+    found.push_back(line.station_of(m.to_world(m.sections[k].from_m, 0.0, 0.0)));
   g.sections_true = static_cast<int>(truth_joints.size()) + 1;
   g.sections_found = static_cast<int>(m.sections.size());
   g.joints_true = static_cast<int>(truth_joints.size());

@@ -57,9 +57,10 @@ std::vector<PlateOutline> plate_outlines(const StationMap& map) {
   for (const Diaphragm& d : map.girder.diaphragms) {
     PlateOutline p;
     if (!plate_size(map.girder, d.station_m, p.width_m, p.height_m)) continue;
-    const Eigen::Vector3d along = d.normal.dot(map.axis) < 0 ? -d.normal : d.normal;
+    const CentrelineFrame f = map.frame_at(d.station_m);  // the girder's directions at the plate
+    const Eigen::Vector3d along = d.normal.dot(f.axis) < 0 ? -d.normal : d.normal;
     p.centre = d.point;
-    p.up = (map.up - along * along.dot(map.up)).normalized();
+    p.up = (f.up - along * along.dot(f.up)).normalized();
     p.left = p.up.cross(along);
     if (d.manhole) {
       const Manhole& m = *d.manhole;

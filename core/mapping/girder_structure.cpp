@@ -90,8 +90,7 @@ const Section* section_at(const StationMap& map, double s) {
 }
 
 Eigen::Vector3d to_world(const StationMap& map, double s, double lateral, double vertical) {
-  const Eigen::Vector3d left = map.up.cross(map.axis);
-  return map.origin + s * map.axis + lateral * left + vertical * map.up;
+  return map.to_world(s, lateral, vertical);
 }
 
 void measure_manhole(const StationMap& map, const std::vector<const PlateView*>& group,
@@ -140,7 +139,6 @@ void measure_manhole(const StationMap& map, const std::vector<const PlateView*>&
 
 std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<PlateView>& views,
                                        const GirderStructureOptions& o) {
-  const Eigen::Vector3d left = map.up.cross(map.axis);
   std::vector<Diaphragm> out;
   for (const auto& group : group_views(views, o.plate_gap_m)) {
     std::vector<double> stations, weights;
@@ -160,7 +158,8 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
     if (d.area_m2 < needed) continue;
     const Eigen::Vector3d n = plate_normal(group);
-    d.normal = (n.x() * map.axis + n.y() * left + n.z() * map.up).normalized();
+    const CentrelineFrame f = map.frame_at(d.station_m);  // the map coordinates' directions there
+    d.normal = (n.x() * f.axis + n.y() * f.left() + n.z() * f.up).normalized();
     d.seen_by_frames = static_cast<int>(frames.size());
     measure_manhole(map, group, o, d);
     out.push_back(d);
@@ -238,8 +237,8 @@ std::vector<CentrelinePoint> find_centreline(const StationMap& map) {
 // beyond them).
 Eigen::Vector3d centreline_at(const StationMap& map, const std::vector<CentrelinePoint>& line, double s) {
   if (line.empty()) return to_world(map, s, 0.0, 0.0);
-  if (s <= line.front().station_m) return line.front().point + (s - line.front().station_m) * map.axis;
-  if (s >= line.back().station_m) return line.back().point + (s - line.back().station_m) * map.axis;
+  if (s <= line.front().station_m) return line.front().point + (s - line.front().station_m) * map.frame_at(s).axis;
+  if (s >= line.back().station_m) return line.back().point + (s - line.back().station_m) * map.frame_at(s).axis;
   const auto hi = std::lower_bound(line.begin(), line.end(), s,
                                    [](const CentrelinePoint& c, double v) { return c.station_m < v; });
   const auto lo = hi - 1;

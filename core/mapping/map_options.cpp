@@ -10,7 +10,8 @@ bool operator==(const StationMapOptions& a, const StationMapOptions& b) {
          a.section_change_mm == b.section_change_mm && a.min_section_stations == b.min_section_stations &&
          a.zone_gap_m == b.zone_gap_m && a.max_symmetric_step_m == b.max_symmetric_step_m &&
          a.min_support_points == b.min_support_points && a.near_range_m == b.near_range_m &&
-         a.per_frame_sizes == b.per_frame_sizes;
+         a.per_frame_sizes == b.per_frame_sizes && a.follow_centreline == b.follow_centreline &&
+         a.centreline_window_m == b.centreline_window_m && a.centreline_node_m == b.centreline_node_m;
 }
 
 StationMapOptions station_map_options(const Parameters& p) {
@@ -26,13 +27,17 @@ StationMapOptions station_map_options(const Parameters& p) {
   o.min_support_points = p.get(map_keys::min_station_points);
   o.near_range_m = p.get(map_keys::near_range_m);
   o.per_frame_sizes = p.get(map_keys::per_frame_sizes);
+  o.follow_centreline = p.get(map_keys::follow_centreline);
+  o.centreline_window_m = p.get(map_keys::centreline_window_m);
+  o.centreline_node_m = p.get(map_keys::centreline_node_m);
   return o;
 }
 
 ParameterGroup map_parameter_group() {
   using namespace map_keys;
   return {{station_step_m.spec(), tolerance_mm.spec(), section_change_mm.spec(), min_section_m.spec(),
-           min_station_points.spec(), near_range_m.spec(), per_frame_sizes.spec()},
+           min_station_points.spec(), near_range_m.spec(), per_frame_sizes.spec(),
+           follow_centreline.spec(), centreline_window_m.spec(), centreline_node_m.spec()},
           {}};
 }
 

@@ -38,6 +38,19 @@ inline constexpr ParameterKey<bool> per_frame_sizes{
     "1: a station's width and height are the median of each frame's own (both walls of a pair from "
     "one pose, so drifting poses cannot split it); 0: from the walls' positions pooled over frames. "
     "Needs zone clusters that find the edge bands (the lab and field presets)"};
+inline constexpr ParameterKey<bool> follow_centreline{
+    "map.follow_centreline", "", true, 0, 1, 1, Stage::Map, "Follow the centre line",
+    "1: stations are arc length along a smooth centre line fitted to the frames' cross-section "
+    "centres, each cross-section cut perpendicular to it (a walk of a posed sequence longer than "
+    "two fit windows); 0: distance along the first frame's axis"};
+inline constexpr ParameterKey<double> centreline_window_m{
+    "map.centreline_window_m", "m", 3.0, 0.5, 20.0, 0.1, Stage::Map, "Centre line window",
+    "Half-length of the stretch of frame centres each point of the centre line is fitted to (a "
+    "local quadratic): longer averages more frames, shorter follows tighter bends"};
+inline constexpr ParameterKey<double> centreline_node_m{
+    "map.centreline_node_m", "m", 0.25, 0.05, 2.0, 0.05, Stage::Map, "Centre line spacing",
+    "Distance between the fitted centre line's points; a cross-section is cut perpendicular to the "
+    "nearest one"};
 }  // namespace map_keys
 
 // Whole stations in `length_m` (at least one).
@@ -69,6 +82,10 @@ struct StationMapOptions {
   double near_range_m = map_keys::near_range_m.default_value;
   // Station sizes from each frame's own walls (drift-proof) instead of pooled positions.
   bool per_frame_sizes = map_keys::per_frame_sizes.default_value;
+  // Stations along a centre line fitted to the frames (else along the first frame's axis).
+  bool follow_centreline = map_keys::follow_centreline.default_value;
+  double centreline_window_m = map_keys::centreline_window_m.default_value;
+  double centreline_node_m = map_keys::centreline_node_m.default_value;
 };
 bool operator==(const StationMapOptions& a, const StationMapOptions& b);
 inline bool operator!=(const StationMapOptions& a, const StationMapOptions& b) { return !(a == b); }

@@ -3,11 +3,27 @@
 #include <chrono>
 
 #include "core/fusion/fusion_options.h"
+#include "core/mapping/centreline_fit.h"
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/mapping/structure_slam.h"
 
 namespace tunnelmap {
+
+namespace {
+
+// Stations along the centre line fitted to the frames' cross-section centres, counted from the
+// first frame's camera in its viewing direction (as along a straight axis). A walk too short to
+// fit keeps the first frame's axis.
+void follow_fitted_centreline(StationMapBuilder& builder, const std::vector<TunnelMap>& maps,
+                              const std::vector<Eigen::Isometry3d>& poses, const StationMapOptions& options) {
+  if (poses.empty()) return;
+  const std::optional<Centreline> line = fit_centreline(centre_samples(maps, poses), poses.front().translation(),
+                                                        poses.front().linear().col(2), options);
+  if (line) builder.follow(*line);
+}
+
+}  // namespace
 
 MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vector<FrameWalls>& walls,
                                   const std::vector<Eigen::Isometry3d>& poses,
@@ -24,6 +40,7 @@ MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vecto
     if (out.refinement.ran) out.poses = out.refinement.poses;
   }
   StationMapBuilder builder(so, tunnel_options(params));
+  if (so.follow_centreline) follow_fitted_centreline(builder, maps, out.poses, so);
   for (std::size_t i = 0; i < maps.size(); ++i)
     builder.add_frame(static_cast<int>(i), maps[i], walls[i], out.poses[i]);
   out.stations = builder.finish(out.groups);

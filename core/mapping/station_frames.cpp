@@ -14,7 +14,7 @@ std::optional<StationView> frame_for_station(const StationMap& map, const std::v
     if (i < detected.size() && !detected[i]) continue;
     const Eigen::Vector3d eye = poses[i].translation();
     const Eigen::Vector3d forward = poses[i].linear().col(2);  // the camera's optical axis
-    const double along = forward.dot(map.axis);
+    const double along = forward.dot(map.frame_at(station_m).axis);
     if (std::abs(along) < 0.5) continue;  // looking at a wall, not down the tunnel
     const double ahead = (station_m - map.station_of(eye)) * (along > 0 ? 1.0 : -1.0);
     if (ahead < 0.5 || ahead > max_ahead_m) continue;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mapping/centreline.h"
 #include "core/mapping/girder_structure.h"
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/map_options.h"  // StationMapOptions
@@ -43,24 +44,38 @@ struct StationMap {
   bool ok = false;
   std::string status;  // "ok", "no_poses", "no_detection"
   std::string reason;
-  // World frame. Station s is at origin + s * axis; `up` is perpendicular to `axis`; the
-  // centre line passes through origin (cross-section centre of the first measured station).
+  // World frame. The reference line's frame at station 0: `up` is perpendicular to `axis`.
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  // The reference line that stations are measured along (core/mapping/centreline.h): fitted to
+  // the girder's course; when straight, station s is at origin + s * axis.
+  Centreline line;
   StationMapOptions options;
   std::vector<Station> stations;   // over the observed extent, in order
   std::vector<Section> sections;   // in order along the axis
   std::vector<PoseGroupStatus> poses;
-  std::vector<TunnelMap> section_maps;  // one world-frame map (walls, zones) per section
+  // World-frame maps (walls, zones) of the sections, in order: one per section along a straight
+  // line, pieces of it along a fitted one.
+  std::vector<TunnelMap> section_maps;
   GirderStructure girder;          // diaphragms, manholes, compartments, centre line
   int frames = 0, frames_used = 0;
   StageTimings timings_ms;         // "map" (total), per frame: see frame_ms
 
   // Stations out of tolerance (convenience for reports).
   std::vector<const Station*> out_of_tolerance() const;
-  // Station of a world point (its projection on the axis).
-  double station_of(const Eigen::Vector3d& world) const { return axis.dot(world - origin); }
+  // Station of a world point (where the line's perpendicular plane passes through it).
+  double station_of(const Eigen::Vector3d& world) const {
+    return line.is_straight() ? axis.dot(world - origin) : line.locate(world).station_m;
+  }
+  // The line's frame at station s, and a point given in it (lateral to the left, vertical up).
+  CentrelineFrame frame_at(double s) const {
+    return line.is_straight() ? CentrelineFrame{s, origin + s * axis, axis, up} : line.frame_at(s);
+  }
+  Eigen::Vector3d to_world(double s, double lateral, double vertical) const {
+    const CentrelineFrame f = frame_at(s);
+    return f.point + lateral * f.left() + vertical * f.up;
+  }
 };
 
 }  // namespace tunnelmap

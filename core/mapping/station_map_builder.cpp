@@ -21,21 +21,17 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Outward directions of the four walls (left, right, top, bottom) in the world frame.
-void outward(const Eigen::Vector3d& axis, const Eigen::Vector3d& up, Eigen::Vector3d out[4]) {
-  const Eigen::Vector3d left = up.cross(axis);
-  out[0] = left;
-  out[1] = -left;
-  out[2] = up;
-  out[3] = -up;
-}
-
 }  // namespace
 
 // station_map_options: core/mapping/map_options.cpp, beside the map.* declarations.
 
 StationMapBuilder::StationMapBuilder(StationMapOptions options, TunnelOptions tunnel)
     : options_(std::move(options)), tunnel_(tunnel) {}
+
+void StationMapBuilder::follow(Centreline line) {
+  line_ = std::move(line);
+  have_line_ = true;
+}
 
 bool StationMapBuilder::ensure_frame(const TunnelMap& map, const Eigen::Isometry3d& T) {
   if (!have_origin_) {
@@ -52,6 +48,8 @@ bool StationMapBuilder::ensure_frame(const TunnelMap& map, const Eigen::Isometry
   if (axis_.dot(first_view_) < 0) axis_ = -axis_;
   up_ = T.linear() * map.up;
   up_ = (up_ - axis_ * axis_.dot(up_)).normalized();
+  // Without a fitted centre line, stations run along this frame's axis.
+  if (!have_line_) line_ = Centreline::straight(origin_, axis_, up_);
   have_frame_ = true;
   return true;
 }
@@ -60,17 +58,11 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
                                      const Eigen::Isometry3d& T, int frame, Pieces& out) const {
   out.clear();
   if (walls.samples.empty()) return;
-  Eigen::Vector3d dir[4];
-  outward(axis_, up_, dir);
-  const Eigen::Matrix3f R = T.linear().cast<float>();
-  const Eigen::Vector3f t = (T.translation() - origin_).cast<float>();
-  const Eigen::Vector3f a = axis_.cast<float>();
-  Eigen::Vector3f d[4], own[4];
-  for (int k = 0; k < 4; ++k) {
-    d[k] = dir[k].cast<float>();
-    own[k] = (-(T.linear() * m.walls[k].normal)).normalized().cast<float>();  // inward -> outward
-  }
-  const float inv_step = static_cast<float>(1.0 / options_.station_step_m);
+  Eigen::Vector3d own[4];
+  for (int k = 0; k < 4; ++k)
+    own[k] = (-(T.linear() * m.walls[k].normal)).normalized();  // inward -> outward
+  const double inv_step = 1.0 / options_.station_step_m;
+  const int camera_node = line_.locate(T.translation()).node;
   // (station, plane) -> sums; a plane has one wall.
   struct Sum {
     double position = 0, own_position = 0, range = 0;
@@ -80,11 +72,14 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
   std::unordered_map<long long, Sum> sums;
   for (const WallSample& ws : walls.samples) {
     if (ws.wall >= 4) continue;
-    const Eigen::Vector3f p = R * ws.point + t;
-    const int station = static_cast<int>(std::floor(a.dot(p) * inv_step));
+    const Eigen::Vector3d p = T * ws.point.cast<double>();
+    // The wall's position outward from the line, in the line's own frame at the point's station.
+    const LinePosition at = line_.locate(p, camera_node);
+    const double outward[4] = {at.lateral_m, -at.lateral_m, at.vertical_m, -at.vertical_m};
+    const int station = static_cast<int>(std::floor(at.station_m * inv_step));
     Sum& s = sums[(static_cast<long long>(station) << 20) ^ ws.plane];
-    s.position += static_cast<double>(d[ws.wall].dot(p)) * ws.points;
-    s.own_position += static_cast<double>(own[ws.wall].dot(p)) * ws.points;
+    s.position += outward[ws.wall] * ws.points;
+    s.own_position += own[ws.wall].dot(p - origin_) * ws.points;
     s.range += static_cast<double>(ws.point.z()) * ws.points;
     s.points += ws.points;
     s.wall = ws.wall;
@@ -219,8 +214,8 @@ void StationMapBuilder::own_parts(TunnelMap& m, const Pieces& own, int camera_st
 
 void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
                                       const Eigen::Isometry3d& T) const {
-  const int camera_station = static_cast<int>(
-      std::floor(axis_.dot(T.translation() - origin_) / options_.station_step_m));
+  const int camera_station =
+      static_cast<int>(std::floor(line_.locate(T.translation()).station_m / options_.station_step_m));
   if (!own.empty()) own_parts(m, own, camera_station);
   if (pieces_.empty()) return;
   // The map around the stations this frame sees (a window keeps the cost per frame flat as the
@@ -422,10 +417,10 @@ StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
 
 void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls,
                                         const Eigen::Isometry3d& T) {
-  const Eigen::Vector3d left = up_.cross(axis_);
+  const int camera_node = line_.locate(T.translation()).node;
   const auto map_coordinates = [&](const Eigen::Vector3f& camera_point) {
-    const Eigen::Vector3d d = T * camera_point.cast<double>() - origin_;
-    return Eigen::Vector3d(axis_.dot(d), left.dot(d), up_.dot(d));
+    const LinePosition at = line_.locate(T * camera_point.cast<double>(), camera_node);
+    return Eigen::Vector3d(at.station_m, at.lateral_m, at.vertical_m);
   };
   std::map<int, PlateView> by_plane;
   for (const WallSample& s : walls.samples) {
@@ -477,15 +472,35 @@ TunnelMap section_map(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis
   return transform_map(m, T);
 }
 
+// The section between stations s0 and s1 drawn along the reference line: one straight box on a
+// straight line; on a fitted line, boxes of at most kDrawnPieceM each along the line's frame at
+// its middle (a 1 m chord departs from a 150 m radius by under 1 mm).
+constexpr double kDrawnPieceM = 1.0;
+
+void add_section_maps(const Centreline& line, const double wall_m[4], double s0, double s1, double band,
+                      std::vector<TunnelMap>& out) {
+  const int pieces = line.is_straight() ? 1 : std::max(1, static_cast<int>(std::ceil((s1 - s0) / kDrawnPieceM)));
+  for (int i = 0; i < pieces; ++i) {
+    const double a = s0 + (s1 - s0) * i / pieces, b = s0 + (s1 - s0) * (i + 1) / pieces;
+    const CentrelineFrame f = line.frame_at(0.5 * (a + b));
+    // The piece's frame, placed so that station s lies at origin + s * axis.
+    const Eigen::Vector3d origin = f.point - f.station_m * f.axis;
+    out.push_back(section_map(origin, f.axis, f.up, wall_m, a, b, band));
+  }
+}
+
 }  // namespace
 
 StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const {
   const auto t0 = std::chrono::steady_clock::now();
   StationMap out;
   out.options = options_;
-  out.origin = origin_;
-  out.axis = axis_;
-  out.up = up_;
+  // A straight line is the first frame's axis through its camera (also when no frame was detected).
+  const CentrelineFrame zero = have_line_ ? line_.frame_at(0.0) : CentrelineFrame{0.0, origin_, axis_, up_};
+  out.origin = zero.point;
+  out.axis = zero.axis;
+  out.up = zero.up;
+  out.line = line_;
   out.frames = static_cast<int>(scans_.size());
   out.poses = merge_scans(scans_, pose_groups, options_.zone_gap_m).poses;
   for (const ScanInput& s : scans_) out.frames_used += s.map.detected ? 1 : 0;
@@ -541,8 +556,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
     std::sort(frames.begin(), frames.end());
     sec.frames = static_cast<int>(std::unique(frames.begin(), frames.end()) - frames.begin());
     out.sections.push_back(sec);
-    out.section_maps.push_back(
-        section_map(origin_, axis_, up_, wall_pos, sec.from_m, sec.to_m, tunnel_.forbidden_band_m));
+    add_section_maps(line_, wall_pos, sec.from_m, sec.to_m, tunnel_.forbidden_band_m, out.section_maps);
 
     for (int k = run.first; k <= run.last; ++k) {
       Station st;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/mapping/centreline.h"
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/section_evidence.h"
 #include "core/mapping/station_map.h"
@@ -20,6 +21,10 @@ StationMapOptions station_map_options(const Parameters& params);
 class StationMapBuilder {
  public:
   StationMapBuilder(StationMapOptions options, TunnelOptions tunnel);
+
+  // Stations along this line (arc length, cross-sections perpendicular to it) instead of the
+  // first detected frame's axis; before the first frame.
+  void follow(Centreline line);
 
   // One frame, in frame order: its detection (camera frame, may be a failure) with the cloud and
   // the plane labels it came from, and its camera-to-world pose. Updates `result.map`: missing
@@ -78,6 +83,8 @@ class StationMapBuilder {
   bool have_frame_ = false, have_origin_ = false;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero(), axis_ = Eigen::Vector3d::UnitX(),
                   up_ = Eigen::Vector3d::UnitZ(), first_view_ = Eigen::Vector3d::UnitX();
+  Centreline line_;  // stations are measured along it
+  bool have_line_ = false;  // given by follow(); else the first detected frame's axis
   // A frame's own cross-section at one station: both walls of a pair measured by that frame
   // along its own wall normals, so that no error of its pose enters (NaN: pair not seen).
   struct FrameDims {

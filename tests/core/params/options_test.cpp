@@ -128,6 +128,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "tunnel.width_min_m", "tunnel.width_max_m", "tunnel.height_min_m", "tunnel.height_max_m",
       "zones.forbidden_band_m", "tunnel.design_width_m", "tunnel.design_height_m", "map.station_step_m",
       "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m", "map.per_frame_sizes",
+      "map.follow_centreline", "map.centreline_window_m", "map.centreline_node_m",
       "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m",
       "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
       "slam.patch_floor_mm", "slam.window_groups", "slam.localise",
