@@ -71,7 +71,7 @@ void check_new_folder(const std::string& dir) {
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) &&
       !(std::filesystem::is_directory(dir, ec) && std::filesystem::is_empty(dir, ec)))
-    throw InputError(dir, "the output folder must be new or empty");
+    throw OutputPathError(dir, "the output folder must be new or empty");
   const std::filesystem::path parent = std::filesystem::absolute(dir).parent_path();
   if (!std::filesystem::is_directory(parent, ec))
     throw InputError(dir, "its parent folder does not exist");
@@ -140,6 +140,16 @@ std::string volume_summary(const FusionResult& r) {
   return text;
 }
 
+// Data beyond the fusion limits is a problem of the input: exit 3, naming it.
+FusionResult fuse_with_limits(const Dataset& ds, const Parameters& params, const FuseSettings& s,
+                              const std::string& input) {
+  try {
+    return fuse_dataset(ds, params, s);
+  } catch (const FusionDataError& e) {
+    throw InputError(input, e.what());
+  }
+}
+
 void run(const FuseOptions& o, CliContext& ctx) {
   const Parameters params = o.in.parameters();
   check_outputs({o.in.input, o.in.params_file}, {o.mesh_path, o.map_path, o.json_path});  // fail now
@@ -161,7 +171,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
   s.progress = [&](const std::string& stage, int done, int) {
     progress.step(static_cast<std::size_t>(done) + (stage == "integrate" ? ds.frames.size() : 0));
   };
-  FusionResult r = fuse_dataset(ds, params, s);
+  FusionResult r = fuse_with_limits(ds, params, s, o.in.input);
   MeshStats ms;
   const int min_weight = fusion_options(params).min_weight;
   const TriangleMesh mesh =

@@ -14,6 +14,7 @@
 #include "core/engine/run_engine.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
+#include "core/util/image_file.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -49,9 +50,7 @@ void write_labels(const std::string& path, const PlaneSegments& planes) {
     for (int u = 0; u < planes.width; ++u)
       img.at<std::uint16_t>(v, u) =
           static_cast<std::uint16_t>(std::min(65535, planes.labels[static_cast<std::size_t>(v) * planes.width + u]));
-  write_path_atomically(path, [&](const std::string& tmp) {
-    if (!cv::imwrite(tmp, img)) throw InputError(path, "cannot write the label image");
-  });
+  write_image_file(path, img);
 }
 
 int run_planes(const PlanesOptions& o) {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/util/error.h"
+#include "core/util/temp_registry.h"
 
 namespace tunnelmap {
 namespace fs = std::filesystem;
@@ -29,6 +30,7 @@ void write_path_atomically(const std::string& path,
   check_output_path(path);
   const std::string target = output_target(path).string();
   const std::string tmp = temporary_name(target);  // beside the target: rename stays atomic
+  TempRegistry::add(tmp);
   try {
     write(tmp);
     if (!fs::exists(tmp)) throw InputError(path, "cannot write: the writer produced no file");
@@ -38,8 +40,10 @@ void write_path_atomically(const std::string& path,
   } catch (...) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
+    TempRegistry::remove(tmp);
     throw;
   }
+  TempRegistry::remove(tmp);
 }
 
 void write_file_atomically(const std::string& path,
@@ -49,6 +53,7 @@ void write_file_atomically(const std::string& path,
     if (!out) throw InputError(path, "cannot write: cannot create a file in that folder");
     write(out);
     out.flush();
+    out.close();  // the last buffered bytes can fail here too (disk full, file size limit)
     if (!out) throw InputError(path, "cannot write: write error (disk full?)");
   });
 }

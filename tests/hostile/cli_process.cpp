@@ -48,6 +48,14 @@ std::string slurp(const std::string& path) {
   _exit(127);
 }
 
+// True once the process's main thread blocks `signal` (/proc/PID/status, "SigBlk:" in hex).
+bool blocks(pid_t pid, int signal) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("SigBlk:", 0) == 0) return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1;
+  return false;
+}
+
 }  // namespace
 
 Outcome run_cli(const std::vector<std::string>& args, const Limits& limits, const std::string& working_dir) {
@@ -66,7 +74,8 @@ Outcome run_cli(const std::vector<std::string>& args, const Limits& limits, cons
   int status = 0;
   rusage usage{};
   while (wait4(pid, &status, WNOHANG, &usage) == 0) {
-    if (limits.signal && !o.signal_sent && (!limits.signal_when || limits.signal_when())) {
+    if (limits.signal && !o.signal_sent && blocks(pid, limits.signal) &&
+        (!limits.signal_when || limits.signal_when())) {
       kill(pid, limits.signal);
       o.signal_sent = true;
     }

@@ -17,7 +17,9 @@ struct Limits {
   // RLIMIT_FSIZE of the child (0 = none): writes past it fail with EFBIG, as on a full disk
   // (SIGXFSZ is ignored, as `ulimit -f` in a shell that traps it).
   unsigned long long file_size_bytes = 0;
-  // Sent once when `signal_when` first returns true (polled every few milliseconds).
+  // Sent once when `signal_when` first returns true (polled every few milliseconds), asked only
+  // once the program blocks the signal (main() has begun: a signal before that would test the
+  // dynamic loader, not the program).
   int signal = 0;
   std::function<bool()> signal_when;
 };

@@ -1,6 +1,7 @@
 #include "tests/hostile/hostile_checks.h"
 
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "tests/support/io_temp_dir.h"
@@ -53,6 +54,25 @@ void copy_small_dataset(const fs::path& to) {
     return ds;
   }();
   fs::copy(source, to, fs::copy_options::recursive);
+}
+
+WithSmallDataset::WithSmallDataset() {
+  dir_ = fs::temp_directory_path() / ("tunnelmap-hostile-" + std::to_string(std::random_device()()));
+  fs::create_directories(dir_);
+  copy_small_dataset(dir_ / "ds");
+}
+
+WithSmallDataset::~WithSmallDataset() {
+  std::error_code ec;
+  fs::remove_all(dir_, ec);
+}
+
+const fs::path& WithSmallDataset::dir() const { return dir_; }
+
+void WithSmallDataset::edit_index(const std::function<void(nlohmann::json&)>& change) const {
+  nlohmann::json j = nlohmann::json::parse(read_file(index()));
+  change(j);
+  write_file(index(), j.dump());
 }
 
 }  // namespace tunnelmap::hostile

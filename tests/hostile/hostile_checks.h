@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -24,5 +26,20 @@ void write_file(const std::filesystem::path& p, const std::string& bytes);
 // A small simulated dataset (3 lab frames), made once per test binary by the real CLI and
 // copied for each test so that no test can spoil another's input.
 void copy_small_dataset(const std::filesystem::path& to);
+
+// A test with its own temporary folder holding a copy of the small dataset ("ds").
+class WithSmallDataset : public ::testing::Test {
+ protected:
+  WithSmallDataset();
+  ~WithSmallDataset() override;
+  const std::filesystem::path& dir() const;
+  std::string ds() const { return (dir() / "ds").string(); }
+  std::filesystem::path index() const { return dir() / "ds" / "dataset.json"; }
+  // Rewrites the dataset's index after `change`.
+  void edit_index(const std::function<void(nlohmann::json&)>& change) const;
+
+ private:
+  std::filesystem::path dir_;
+};
 
 }  // namespace tunnelmap::hostile

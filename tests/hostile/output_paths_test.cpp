@@ -4,23 +4,15 @@
 #include <sys/stat.h>
 
 #include "tests/hostile/hostile_checks.h"
-#include "tests/support/io_temp_dir.h"
 
 namespace tunnelmap::hostile {
 namespace {
 
 namespace fs = std::filesystem;
 
-class OutputPaths : public ::testing::Test {
+class OutputPaths : public WithSmallDataset {
  protected:
-  void SetUp() override { copy_small_dataset(ds_); }
-  fs::path dir() const { return tmp_.path(); }
-  std::string ds() const { return ds_.string(); }
-  std::string frame() const { return (ds_ / "depth" / "000000.png").string(); }
-
- private:
-  testing::IoTempDir tmp_;
-  fs::path ds_ = tmp_.path() / "ds";
+  std::string frame() const { return ds() + "/depth/000000.png"; }
 };
 
 TEST_F(OutputPaths, ADeviceBehindASymlinkIsRefused) {
