@@ -9,6 +9,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
+#include "app/cli/output_options.h"
 #include "core/export/map_ply.h"
 #include "core/engine/run_engine.h"
 #include "core/io/frame_source.h"
@@ -85,8 +86,7 @@ int run_detect(const DetectOptions& o) {
   settings.camera_up = o.in.camera_up();
   settings.method = parse_method(o.method);
   settings.threads = o.threads;
-  for (const std::string& out : {o.json_path, o.csv_path, o.ply_path})
-    if (!out.empty()) check_output_path(out);
+  check_outputs({o.in.input, o.in.params_file}, {o.json_path, o.csv_path, o.ply_path});
   const bool live = !o.device.empty();
   settings.live = live;
   // One line each (CLI::RequiredError appends " is required" itself).
@@ -163,9 +163,9 @@ void add_detect_command(CLI::App& app, CliContext& ctx) {
   add_input_options(cmd, o.in, false);
   cmd->add_option("--device", o.device, "Live OpenNI2 device URI (see `devices`; \"default\" = the first one)");
   cmd->add_option("--frames", o.frames, "Frames to process from --device (default 30)")->check(CLI::PositiveNumber);
-  cmd->add_option("--json", o.json_path, "Write per-frame results and a summary as JSON");
-  cmd->add_option("--csv", o.csv_path, "Write one row per frame as CSV (the JSON's main fields)");
-  cmd->add_option("--ply", o.ply_path,
+  add_output_option(cmd, "--json", o.json_path, "Write per-frame results and a summary as JSON");
+  add_output_option(cmd, "--csv", o.csv_path, "Write one row per frame as CSV (the JSON's main fields)");
+  add_output_option(cmd, "--ply", o.ply_path,
                   "Write the tunnel map (last detected frame, world frame when posed) as a binary PLY mesh");
   cmd->add_option("--threads", o.threads, "Worker threads for sequences (default 0 = all cores; 1 = serial)")
       ->check(CLI::Range(0, 256));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/cli/commands.h"
+#include "core/io/output_folder.h"
 #include "core/baselines/baseline_options.h"
 #include "core/evaluation/girder_protocol.h"
 #include "core/evaluation/protocol.h"
@@ -104,19 +105,17 @@ int run_girders_protocol(const EvaluateOptions& o) {
   Parameters check_sets;
   check_sets.set_from_strings(o.sets);  // a bad --set fails now, not after the first girder
   if (!o.quiet) g.progress = [](const std::string& line) { std::printf("%s\n", line.c_str()); std::fflush(stdout); };
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(o.out_dir))
-    throw InputError(o.out_dir, "cannot create the output folder");
-  const std::string json_path = o.out_dir + "/girders.json", md_path = o.out_dir + "/girders.md";
-  for (const std::string& f : {json_path, md_path}) check_output_path(f);
-  g.work_dir = o.out_dir + "/.girders-work";
+  StagedFolder out(o.out_dir);  // refused now if it holds files we did not write
+  const std::string staged = out.path().string();
+  g.work_dir = staged + "/.girders-work";
   const std::vector<GirderResult> results = run_girders(g);
+  std::error_code ec;
   std::filesystem::remove_all(g.work_dir, ec);
   const nlohmann::json report = girders_json(results, g);
-  write_text(json_path, report.dump(2) + "\n");
-  write_text(md_path, girders_markdown(report));
-  std::printf("wrote %s, %s\n", json_path.c_str(), md_path.c_str());
+  write_text(staged + "/girders.json", report.dump(2) + "\n");
+  write_text(staged + "/girders.md", girders_markdown(report));
+  out.commit();
+  std::printf("wrote %s/girders.json, %s/girders.md\n", o.out_dir.c_str(), o.out_dir.c_str());
   return 0;
 }
 
@@ -166,15 +165,11 @@ int run(const EvaluateOptions& o) {
   if (!o.quiet) p.progress = [](const std::string& line) { std::printf("%s\n", line.c_str()); std::fflush(stdout); };
   if (!o.quiet && o.datasets.empty()) std::printf("presets: %s\n", p.presets_dir.c_str());
 
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
-  if (ec || !std::filesystem::is_directory(o.out_dir))
-    throw InputError(o.out_dir, "cannot create the output folder");
+  StagedFolder out(o.out_dir);  // refused now if it holds files we did not write
   const std::string base = o.protocol == "sweeps" ? "sweeps" : "table1";
-  const std::string md_path = o.out_dir + "/" + base + ".md";
-  const std::string csv_path = o.out_dir + "/" + (o.protocol == "sweeps" ? "sweeps.csv" : "results.csv");
-  const std::string png_path = o.out_dir + "/" + base + ".png";
-  for (const std::string& f : {md_path, csv_path, png_path}) check_output_path(f);
+  const std::string md_name = base + ".md", png_name = base + ".png";
+  const std::string csv_name = o.protocol == "sweeps" ? "sweeps.csv" : "results.csv";
+  const std::string staged = out.path().string() + "/";
 
   std::vector<CellResult> results;
   if (!o.datasets.empty()) {
@@ -195,18 +190,20 @@ int run(const EvaluateOptions& o) {
   ReportInfo info;
   info.title = o.protocol == "sweeps" ? "Robustness sweeps" : o.datasets.empty() ? "Table 1 reproduction" : "Evaluation on datasets";
   info.protocol = protocol_text(o, p);
-  write_text(md_path, evaluation_markdown(results, bounds, info));
-  write_text(csv_path, evaluation_csv(results));
+  write_text(staged + md_name, evaluation_markdown(results, bounds, info));
+  write_text(staged + csv_name, evaluation_csv(results));
   if (o.protocol == "sweeps")
-    write_sweeps_plot(png_path, results);
+    write_sweeps_plot(staged + png_name, results);
   else
-    write_table1_plot(png_path, results);
+    write_table1_plot(staged + png_name, results);
+  out.commit();
   int failed = 0;
   for (const BoundCheck& b : bounds) {
     failed += !b.pass;
     if (!b.pass) std::printf("FAIL: %s (measured %.2f, limit %.2f)\n", b.name.c_str(), b.value, b.limit);
   }
-  std::printf("wrote %s, %s, %s", md_path.c_str(), csv_path.c_str(), png_path.c_str());
+  const std::string folder = o.out_dir + "/";
+  std::printf("wrote %s, %s, %s", (folder + md_name).c_str(), (folder + csv_name).c_str(), (folder + png_name).c_str());
   if (!bounds.empty()) std::printf("; %zu of %zu bounds pass", bounds.size() - failed, bounds.size());
   std::printf("\n");
   return o.check && failed > 0 ? 1 : 0;

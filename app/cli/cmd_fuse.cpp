@@ -9,6 +9,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
+#include "app/cli/output_options.h"
 #include "core/export/map_ply.h"
 #include "core/export/mesh_ply.h"
 #include "core/fusion/fuse_dataset.h"
@@ -70,7 +71,7 @@ void check_new_folder(const std::string& dir) {
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) &&
       !(std::filesystem::is_directory(dir, ec) && std::filesystem::is_empty(dir, ec)))
-    throw InputError(dir, "the output folder must be new or empty");
+    throw OutputPathError(dir, "the output folder must be new or empty");
   const std::filesystem::path parent = std::filesystem::absolute(dir).parent_path();
   if (!std::filesystem::is_directory(parent, ec))
     throw InputError(dir, "its parent folder does not exist");
@@ -139,12 +140,21 @@ std::string volume_summary(const FusionResult& r) {
   return text;
 }
 
+// Data beyond the fusion limits is a problem of the input: exit 3, naming it.
+FusionResult fuse_with_limits(const Dataset& ds, const Parameters& params, const FuseSettings& s,
+                              const std::string& input) {
+  try {
+    return fuse_dataset(ds, params, s);
+  } catch (const FusionDataError& e) {
+    throw InputError(input, e.what());
+  }
+}
+
 void run(const FuseOptions& o, CliContext& ctx) {
   const Parameters params = o.in.parameters();
+  check_outputs({o.in.input, o.in.params_file}, {o.mesh_path, o.map_path, o.json_path});  // fail now
   const DatasetInput input(o.in);  // a dataset, a TUM sequence or a robot recording
   const Dataset& ds = input.dataset();
-  for (const std::string& p : {o.mesh_path, o.map_path, o.json_path})
-    if (!p.empty()) check_output_path(p);  // fail now, not after the work
   if (!o.refined_dataset.empty()) check_new_folder(o.refined_dataset);
   if (!o.pieces_dir.empty()) {
     check_new_folder(o.pieces_dir);
@@ -161,7 +171,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
   s.progress = [&](const std::string& stage, int done, int) {
     progress.step(static_cast<std::size_t>(done) + (stage == "integrate" ? ds.frames.size() : 0));
   };
-  FusionResult r = fuse_dataset(ds, params, s);
+  FusionResult r = fuse_with_limits(ds, params, s, o.in.input);
   MeshStats ms;
   const int min_weight = fusion_options(params).min_weight;
   const TriangleMesh mesh =
@@ -303,9 +313,9 @@ void add_fuse_command(CLI::App& app, CliContext& ctx) {
   CLI::App* cmd = app.add_subcommand(
       "fuse", "Fuse a posed dataset (poses or arm joints) into a coloured mesh and one tunnel map");
   add_input_options(cmd, opt->in);
-  cmd->add_option("--mesh", opt->mesh_path, "Fused mesh as binary PLY (colours, normals)");
-  cmd->add_option("--map", opt->map_path, "Merged tunnel map as PLY (world frame)");
-  cmd->add_option("--json", opt->json_path, "Summary: volume, mesh, merged map, per-pose verdicts");
+  add_output_option(cmd, "--mesh", opt->mesh_path, "Fused mesh as binary PLY (colours, normals)");
+  add_output_option(cmd, "--map", opt->map_path, "Merged tunnel map as PLY (world frame)");
+  add_output_option(cmd, "--json", opt->json_path, "Summary: volume, mesh, merged map, per-pose verdicts");
   cmd->add_flag("--use-joints", opt->prefer_joints,
                 "Pose from the arm's forward kinematics even where a frame has a \"pose\"");
   cmd->add_flag("--no-pose-refinement", opt->no_pose_refinement,

@@ -14,6 +14,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
+#include "app/cli/output_options.h"
 #include "core/export/map_ply.h"
 #include "core/fusion/fusion_options.h"
 #include "core/io/dataset.h"
@@ -125,14 +126,15 @@ void run(const MapOptions& o, CliContext& ctx) {
   const Parameters params = map_parameters(o);
   Pipeline pipeline = o.in.pipeline();
   pipeline.set_params(params);
+  // Fail now, not after the work.
+  check_outputs({o.in.input, o.in.params_file},
+                {o.json_path, o.csv_path, o.ply_path, o.report_path, o.diaphragms_csv_path});
   const DatasetInput input(o.in);  // a dataset, a TUM sequence or a robot recording
   const Dataset& ds = input.dataset();
 #ifndef TUNNELMAP_HAVE_REPORT
   if (!o.report_path.empty())
     throw ParameterError("--report needs the Qt build of tunnelmap (configure with -DTUNNELMAP_BUILD_GUI=ON)");
 #endif
-  for (const std::string& p : {o.json_path, o.csv_path, o.ply_path, o.report_path, o.diaphragms_csv_path})
-    if (!p.empty()) check_output_path(p);  // fail now, not after the work
   Progress progress(ds.frames.size());
   DatasetMapping dm = map_dataset(ds, pipeline, !o.no_pose_refinement,
                                   [&](std::size_t done) {
@@ -187,12 +189,12 @@ void add_map_command(CLI::App& app, CliContext& ctx) {
                   "Design cross-section WIDTHxHEIGHT in metres (tunnel.design_width_m/height_m)");
   cmd->add_option("--tolerance-mm", o->tolerance_mm,
                   "Allowed deviation from the design in mm (default 10; map.tolerance_mm)");
-  cmd->add_option("--json", o->json_path, "Write the station map as JSON");
-  cmd->add_option("--csv", o->csv_path, "Write one row per station as CSV");
-  cmd->add_option("--diaphragms-csv", o->diaphragms_csv_path,
+  add_output_option(cmd, "--json", o->json_path, "Write the station map as JSON");
+  add_output_option(cmd, "--csv", o->csv_path, "Write one row per station as CSV");
+  add_output_option(cmd, "--diaphragms-csv", o->diaphragms_csv_path,
                   "Write one row per diaphragm (station, normal, manhole size, shape, clearances) as CSV");
-  cmd->add_option("--ply", o->ply_path, "Write the sectioned map as a binary PLY mesh (world frame)");
-  cmd->add_option("--report", o->report_path, "Write the inspection report as PDF");
+  add_output_option(cmd, "--ply", o->ply_path, "Write the sectioned map as a binary PLY mesh (world frame)");
+  add_output_option(cmd, "--report", o->report_path, "Write the inspection report as PDF");
   cmd->add_flag("--no-pose-refinement", o->no_pose_refinement,
                 "Map with the forward-kinematics (or given) poses as they are");
   cmd->add_flag("--quiet,-q", o->quiet, "Print nothing but errors");

@@ -9,10 +9,12 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/input_options.h"
+#include "app/cli/output_options.h"
 #include "core/io/frame_source.h"
 #include "core/engine/run_engine.h"
 #include "core/report/results_json.h"
 #include "core/util/atomic_file.h"
+#include "core/util/image_file.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::cli {
@@ -48,9 +50,7 @@ void write_labels(const std::string& path, const PlaneSegments& planes) {
     for (int u = 0; u < planes.width; ++u)
       img.at<std::uint16_t>(v, u) =
           static_cast<std::uint16_t>(std::min(65535, planes.labels[static_cast<std::size_t>(v) * planes.width + u]));
-  write_path_atomically(path, [&](const std::string& tmp) {
-    if (!cv::imwrite(tmp, img)) throw InputError(path, "cannot write the label image");
-  });
+  write_image_file(path, img);
 }
 
 int run_planes(const PlanesOptions& o) {
@@ -58,8 +58,7 @@ int run_planes(const PlanesOptions& o) {
   if (!o.labels_path.empty() && std::filesystem::path(o.labels_path).extension() != ".png")
     throw ParameterError("--labels must name a .png file");
   const Parameters params = o.in.parameters();
-  for (const std::string& out : {o.json_path, o.labels_path})
-    if (!out.empty()) check_output_path(out);
+  check_outputs({o.in.input, o.in.params_file}, {o.json_path, o.labels_path});
   auto source = open_input(o.in.input, o.in.read_options());
   // Cloud, normals and planes (--repeat times, median timings) in the worker threads; printing
   // and the label images in frame order.
@@ -120,8 +119,8 @@ void add_planes_command(CLI::App& app, CliContext& ctx) {
   static PlanesOptions o;
   auto* cmd = app.add_subcommand("planes", "Extract planes only (PG&C) and time the stages");
   add_input_options(cmd, o.in);
-  cmd->add_option("--json", o.json_path, "Write the planes and timings as JSON");
-  cmd->add_option("--labels", o.labels_path, "Write the plane label image (16-bit PNG; _NNNNNN per frame for sequences)");
+  add_output_option(cmd, "--json", o.json_path, "Write the planes and timings as JSON");
+  add_output_option(cmd, "--labels", o.labels_path, "Write the plane label image (16-bit PNG; _NNNNNN per frame for sequences)");
   cmd->add_option("--repeat", o.repeat, "Run N times and report median timings");
   cmd->add_option("--threads", o.threads,
                   "Worker threads for sequences (default 0 = all cores; use 1 for undisturbed timings)")

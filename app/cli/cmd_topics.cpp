@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/commands.h"
+#include "app/cli/output_options.h"
 #include "core/recordings/recording.h"
 #include "core/recordings/topic_roles.h"
 #include "core/util/atomic_file.h"
@@ -90,7 +91,7 @@ void print_table(const std::string& path, const RecordingSummary& s, const std::
 }
 
 void run(const TopicsOptions& o, CliContext& ctx) {
-  if (!o.json_path.empty()) check_output_path(o.json_path);
+  check_outputs({o.input}, {o.json_path});
   const std::unique_ptr<Recording> rec = open_recording(o.input);
   const std::map<std::string, TopicRole> roles = classify_topics(*rec);
   const Suggestion suggestion = suggest(o.input, *rec, roles);
@@ -109,7 +110,7 @@ void add_topics_command(CLI::App& app, CliContext& ctx) {
   CLI::App* cmd = app.add_subcommand(
       "topics", "List the topics of a ROS bag (.bag, .mcap, .db3 or rosbag2 folder) and what TunnelMap can use");
   cmd->add_option("BAG", o->input, "ROS 1 bag, MCAP file, rosbag2 sqlite3 file, or rosbag2 folder")->required();
-  cmd->add_option("--json", o->json_path, "Also write the listing as JSON to FILE");
+  add_output_option(cmd, "--json", o->json_path, "Also write the listing as JSON to FILE");
   cmd->callback([o, &ctx] { run(*o, ctx); });
 }
 

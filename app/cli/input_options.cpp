@@ -80,10 +80,10 @@ Parameters InputOptions::parameters() const {
 
 ReadOptions InputOptions::read_options() const {
   ReadOptions r;
-  if (depth_scale != 0) {
-    if (!(depth_scale > 0) || !std::isfinite(depth_scale) || depth_scale > 1e7)
+  if (depth_scale) {  // 0 given is refused, not taken as "the default"
+    if (!(*depth_scale > 0) || !std::isfinite(*depth_scale) || *depth_scale > 1e7)
       throw ParameterError("--depth-scale must be a positive number of units per metre");
-    r.depth_units_per_m = depth_scale;
+    r.depth_units_per_m = *depth_scale;
     r.depth_scale_given = true;
   }
   if (!intrinsics.empty()) {

@@ -18,7 +18,7 @@ struct InputOptions {
   std::string params_file;
   std::vector<std::string> sets;
   std::string intrinsics;   // "FX,FY,CX,CY"
-  double depth_scale = 0;   // 0 = reader default (1000 for PNG, 5000 for TUM sequences)
+  std::optional<double> depth_scale;  // unset = reader default (1000 for PNG, 5000 for TUM sequences)
   std::string up;           // "X,Y,Z" camera frame
   std::optional<double> max_time_diff;  // TUM pairing limit in seconds (default 0.02)
   std::string world_up;     // "X,Y,Z" world frame, replaces a dataset's up

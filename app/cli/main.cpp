@@ -4,12 +4,16 @@
 #include <string>
 
 #include "app/cli/commands.h"
+#include "app/cli/error_line.h"
 #include "core/util/error.h"
+#include "core/util/temp_registry.h"
 #include "sensors/openni/register_openni.h"
 
 int main(int argc, char** argv) {
   using namespace tunnelmap;
   if (argc >= 2 && std::string(argv[1]) == "render") return cli::run_render_verb(argc, argv);
+  // Before any thread starts: SIGINT/SIGTERM remove the run's temporary files, exit 130/143.
+  install_interrupt_cleanup("tunnelmap-cli");
   CLI::App app{"TunnelMap: maps rectangular steel tunnels from depth frames (PG&C)",
                "tunnelmap-cli"};
   app.set_version_flag("--version", std::string("tunnelmap-cli ") + TUNNELMAP_VERSION);
@@ -38,16 +42,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "tunnelmap-cli: " << e.what() << " (see --help)\n";
+    std::cerr << "tunnelmap-cli: " << cli::error_line(e.what()) << " (see --help)\n";
     return 2;
   } catch (const ParameterError& e) {
-    std::cerr << "tunnelmap-cli: " << e.what() << "\n";
+    std::cerr << "tunnelmap-cli: " << cli::error_line(e.what()) << "\n";
     return 2;
   } catch (const InputError& e) {
-    std::cerr << "tunnelmap-cli: " << e.what() << "\n";
+    std::cerr << "tunnelmap-cli: " << cli::error_line(e.what()) << "\n";
     return 3;
   } catch (const std::exception& e) {
-    std::cerr << "tunnelmap-cli: internal error: " << e.what() << "\n";
+    std::cerr << "tunnelmap-cli: internal error: " << cli::error_line(e.what()) << "\n";
     return 4;
   }
   return ctx.exit_code;

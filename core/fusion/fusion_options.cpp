@@ -62,8 +62,8 @@ void extend_depth_bounds(const DepthFrame& f, const Eigen::Isometry3d& T, const 
     }
 }
 
-ParameterError no_depth_error(const FusionOptions& o) {
-  return ParameterError("fusion: no depth within [" + std::to_string(o.min_depth_m) + ", " +
+FusionDataError no_depth_error(const FusionOptions& o) {
+  return FusionDataError("fusion: no depth within [" + std::to_string(o.min_depth_m) + ", " +
                         std::to_string(o.max_depth_m) + "] m in any posed frame");
 }
 
@@ -73,7 +73,7 @@ VoxelGrid fusion_grid(const Eigen::AlignedBox3d& box, const FusionOptions& o) {
   const Eigen::Vector3d hi = box.max() + Eigen::Vector3d::Constant(o.bounds_margin_m);
   const Eigen::Vector3d size = hi - lo;
   if (size.maxCoeff() > o.max_extent_m)
-    throw ParameterError("fusion: the data spans " + std::to_string(size.maxCoeff()) +
+    throw FusionDataError("fusion: the data spans " + std::to_string(size.maxCoeff()) +
                          " m, more than " + std::string(fusion_keys::max_extent_m.key) + " = " + std::to_string(o.max_extent_m));
   // On the sparse volume's lattice (voxel centres at multiples of the voxel size), so that the
   // two volumes sample the same points and their meshes can be compared vertex for vertex.

@@ -8,6 +8,7 @@
 #include "core/normals/cloud_options.h"
 #include "core/params/parameter_key.h"
 #include "core/params/parameters.h"
+#include "core/fusion/fusion_error.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -67,7 +68,7 @@ void extend_depth_bounds(const DepthFrame& frame, const Eigen::Isometry3d& camer
                          const FusionOptions& o, Eigen::AlignedBox3d& box, int stride = 4);
 
 // What fusing frames without any depth in the fusion range throws.
-ParameterError no_depth_error(const FusionOptions& o);
+FusionDataError no_depth_error(const FusionOptions& o);
 
 // The dense voxel grid covering `box` plus the margin. ParameterError when the box is empty or a
 // side exceeds fusion.max_extent_m.

@@ -2,10 +2,10 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <random>
 
 #include "core/export/mesh_ply.h"
+#include "core/io/output_folder.h"
+#include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -46,27 +46,12 @@ nlohmann::json index_json(const std::vector<MeshPiece>& pieces, const PieceIndex
 
 void write_mesh_pieces(const std::string& dir, const std::vector<MeshPiece>& pieces,
                        const PieceIndexInfo& info, const nlohmann::json& params_json) {
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !(fs::is_directory(dir, ec) && fs::is_empty(dir, ec)))
-    throw InputError(dir, "the pieces' folder must be new or empty");
-  const fs::path final_dir = fs::absolute(dir).lexically_normal();
-  const fs::path tmp = final_dir.parent_path() /
-                       (final_dir.filename().string() + ".tmp-" + std::to_string(std::random_device()()));
-  if (!fs::create_directory(tmp, ec)) throw InputError(dir, "cannot create the folder: " + ec.message());
-  try {
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      write_mesh_ply((tmp / piece_file(i)).string(), pieces[i].mesh, params_json);
-    std::ofstream out(tmp / "pieces.json");
-    out << index_json(pieces, info).dump(2) << "\n";
-    if (!out) throw InputError((fs::path(dir) / "pieces.json").string(), "cannot write the index");
-    out.close();
-    if (fs::exists(final_dir, ec)) fs::remove(final_dir, ec);  // new or empty: checked above
-    fs::rename(tmp, final_dir, ec);
-    if (ec) throw InputError(dir, "cannot move the pieces into place: " + ec.message());
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  StagedFolder out(dir);  // whole or nothing, beside the target
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    write_mesh_ply((out.path() / piece_file(i)).string(), pieces[i].mesh, params_json);
+  write_file_atomically((out.path() / "pieces.json").string(),
+                        [&](std::ostream& index) { index << index_json(pieces, info).dump(2) << "\n"; });
+  out.commit();
 }
 
 }  // namespace tunnelmap

@@ -7,6 +7,7 @@
 #include <string>
 #include <thread>
 
+#include "core/fusion/fusion_error.h"
 #include "core/fusion/truncation_band.h"
 #include "core/util/error.h"
 
@@ -60,9 +61,9 @@ VoxelBlock& SparseTsdfVolume::block_at(const Eigen::Vector3i& coords) {
   if (too_long || too_big) {
     index_.erase(it);
     if (too_long)
-      throw ParameterError("fusion: the data spans " + std::to_string(span) +
+      throw FusionDataError("fusion: the data spans " + std::to_string(span) +
                            " m, more than fusion.max_extent_m = " + std::to_string(limits_.max_extent_m));
-    throw ParameterError("fusion: the observed surface needs more than " +
+    throw FusionDataError("fusion: the observed surface needs more than " +
                          std::to_string(limits_.max_bytes >> 20) + " MiB of voxel blocks; raise "
                          "fusion.voxel_mm or lower fusion.max_depth_m");
   }

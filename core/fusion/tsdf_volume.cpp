@@ -5,6 +5,7 @@
 #include <string>
 #include <thread>
 
+#include "core/fusion/fusion_error.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -18,9 +19,9 @@ constexpr std::size_t kMaxBytes = std::size_t(1800) << 20;
 TsdfVolume::TsdfVolume(const VoxelGrid& grid, const TsdfOptions& options)
     : grid_(grid), options_(options) {
   if (grid.dims.minCoeff() < 2 || !(grid.voxel_m > 0))
-    throw ParameterError("fusion: empty volume (no depth inside the fusion range?)");
+    throw FusionDataError("fusion: empty volume (no depth inside the fusion range?)");
   if (grid.count() > kMaxBytes / kBytesPerVoxel)
-    throw ParameterError("fusion: volume of " + std::to_string(grid.dims.x()) + "x" +
+    throw FusionDataError("fusion: volume of " + std::to_string(grid.dims.x()) + "x" +
                          std::to_string(grid.dims.y()) + "x" + std::to_string(grid.dims.z()) +
                          " voxels needs more than 1.8 GB; raise fusion.voxel_mm or lower "
                          "fusion.max_depth_m");

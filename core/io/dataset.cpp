@@ -6,6 +6,7 @@
 
 #include "core/io/depth_png.h"
 #include "core/io/json_file.h"
+#include "core/io/input_limits.h"
 #include "core/io/read_options.h"
 #include "core/io/tum_sequence.h"
 #include "core/util/error.h"
@@ -70,6 +71,8 @@ std::string resolve_frame_path(const Checker& c, const fs::path& root, const jso
                                const std::string& key) {
   const std::string rel = c.string(j, key);
   if (rel.empty()) c.fail(key, "empty path");
+  // JSON may carry "\u0000"; the file system would see the path cut short there.
+  if (rel.find('\0') != std::string::npos) c.fail(key, "path contains a NUL character");
   const fs::path p(rel);
   if (p.is_absolute() || p.has_root_name() || p.has_root_directory())
     c.fail(key, "'" + rel + "' must be a path relative to the dataset folder");
@@ -115,6 +118,8 @@ Eigen::Isometry3d parse_pose(const Checker& c, const json& j, const std::string&
   if (err > 1e-3)
     c.fail(key, "rotation is not orthonormal (max |R'R - I| = " + std::to_string(err) + ")");
   if (r.determinant() < 0) c.fail(key, "rotation is a reflection (determinant -1)");
+  if (!(t.topRightCorner<3, 1>().cwiseAbs().maxCoeff() <= kMaxPoseTranslationM))
+    c.fail(key, std::string("translation is out of range (|value| <= ") + kMaxPoseTranslationText + ")");
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = r;
   pose.translation() = t.topRightCorner<3, 1>();
@@ -175,6 +180,9 @@ Dataset read_dataset_json(const std::string& dir_or_json_path) {
   const json& frames = c.member(j, "frames", "frames");
   if (!frames.is_array()) c.fail("frames", "must be an array");
   if (frames.empty()) c.fail("frames", "has no frames");
+  if (frames.size() > kMaxDatasetFrames)
+    c.fail("frames", "has " + std::to_string(frames.size()) + " frames, more than the " +
+                         std::to_string(kMaxDatasetFrames) + " a dataset may hold");
   for (std::size_t i = 0; i < frames.size(); ++i) d.frames.push_back(parse_frame(c, root, frames[i], i));
 
   if (j.contains("robot")) d.robot = j["robot"];

@@ -40,7 +40,7 @@ json pose_json(const Eigen::Isometry3d& pose) {
 void write_dataset_folder(const Dataset& ds, const std::string& out_dir, const SequenceExport& ex) {
   const std::size_t n = ds.frames.size();
   if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
-  StagedFolder out(out_dir, ex.replaceable);
+  StagedFolder out(out_dir);
   make_folder(out.path() / "depth");
   json frames = json::array();
   bool joints_dropped = false;

@@ -8,12 +8,20 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "core/io/input_limits.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Before decoding: a small file can claim a frame that takes gigabytes once decoded.
+void check_image_pixels(const std::string& path, int w, int h) {
+  if (static_cast<long long>(w) * h <= kMaxImagePixels) return;
+  throw InputError(path, "image of " + std::to_string(w) + "x" + std::to_string(h) +
+                             " pixels is too large (at most 4096x4096 = 16.8 Mpx)");
+}
 
 constexpr std::size_t kMaxImageFileBytes = 512u << 20;
 const std::uint8_t kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -53,6 +61,7 @@ void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path
       if (w == 0 || h == 0 || w > kMaxImageSide || h > kMaxImageSide)
         throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
                                    " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
+      check_image_pixels(path, w, h);
       return;
     }
     if (length < 2) break;
@@ -118,6 +127,7 @@ PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::st
   if (w == 0 || h == 0 || w > std::uint32_t(kMaxImageSide) || h > std::uint32_t(kMaxImageSide))
     throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
                                " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
+  check_image_pixels(path, static_cast<int>(w), static_cast<int>(h));
   PngHeader header;
   header.width = static_cast<int>(w);
   header.height = static_cast<int>(h);

@@ -2,9 +2,13 @@
 
 #include <unistd.h>
 
+#include <fstream>
 #include <random>
+#include <set>
 
+#include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/temp_registry.h"
 
 namespace tunnelmap {
 
@@ -20,36 +24,70 @@ bool is_empty_folder(const fs::path& p) {
   std::error_code ec;
   return fs::is_directory(p, ec) && fs::is_empty(p, ec) && !ec;
 }
+
+// Every regular file and symlink under `dir`, relative to it, the manifest excluded.
+std::set<std::string> files_under(const fs::path& dir) {
+  std::set<std::string> files;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (it->is_directory(ec) && !it->is_symlink(ec)) continue;
+    const std::string rel = it->path().lexically_relative(dir).generic_string();
+    if (rel != kWrittenManifest) files.insert(rel);
+  }
+  if (ec) throw InputError(dir.string(), "cannot list the folder: " + ec.message());
+  return files;
+}
+
+void write_manifest(const fs::path& dir) {
+  std::string list;
+  for (const std::string& f : files_under(dir)) list += f + "\n";
+  write_file_atomically((dir / kWrittenManifest).string(), [&](std::ostream& out) { out << list; });
+}
 }  // namespace
 
-StagedFolder::StagedFolder(const std::string& target,
-                           const std::function<bool(const fs::path&)>& replaceable) {
-  if (target.empty()) throw InputError("", "no output folder given");
+bool written_only_by_us(const fs::path& dir) {
+  std::ifstream in(dir / kWrittenManifest);
+  if (!in) return false;
+  std::set<std::string> listed;
+  for (std::string line; std::getline(in, line);) listed.insert(line);
+  for (const std::string& f : files_under(dir))
+    if (!listed.count(f)) return false;
+  return true;
+}
+
+StagedFolder::StagedFolder(const std::string& target) {
+  if (target.empty()) throw OutputPathError("''", "empty output folder path");
   target_ = fs::absolute(target).lexically_normal();
   if (target_.filename().empty()) target_ = target_.parent_path();  // "out/"
   std::error_code ec;
   if (fs::exists(target_, ec)) {
-    if (!fs::is_directory(target_, ec)) throw InputError(target, "exists and is not a folder");
+    if (!fs::is_directory(target_, ec))
+      throw OutputPathError(target, "exists and is not a folder; refusing to replace it");
     if (!is_empty_folder(target_)) {
-      if (!replaceable || !replaceable(target_))
-        throw InputError(target, "folder is not empty; refusing to write into it (choose a new or "
-                                 "empty folder)");
+      if (!written_only_by_us(target_))
+        throw OutputPathError(target, "folder is not empty and holds files tunnelmap did not write; "
+                                      "refusing to write into it (choose a new or empty folder)");
       replace_ = true;
     }
   }
   created_ = first_missing_folder(target_.parent_path());
-  make_folder(target_.parent_path());
   staging_ = target_.parent_path() / ("." + target_.filename().string() + ".tmp-" + unique_suffix());
+  TempRegistry::add(created_.empty() ? staging_ : created_);  // before it exists: no window
+  make_folder(target_.parent_path());
   make_folder(staging_);
 }
 
 StagedFolder::~StagedFolder() {
   if (committed_) return;
+  const fs::path scratch = created_.empty() ? staging_ : created_;
   std::error_code ec;
-  fs::remove_all(created_.empty() ? staging_ : created_, ec);
+  fs::remove_all(scratch, ec);
+  TempRegistry::remove(scratch);
 }
 
 void StagedFolder::commit() {
+  write_manifest(staging_);
   std::error_code ec;
   fs::path old;
   if (replace_) {
@@ -66,6 +104,7 @@ void StagedFolder::commit() {
     throw InputError(target_.string(), "cannot move the written folder into place: " + why);
   }
   committed_ = true;
+  TempRegistry::remove(created_.empty() ? staging_ : created_);
   if (!old.empty()) fs::remove_all(old, ec);
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/io/output_folder.h"
 #include "core/kinematics/robot_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -29,16 +30,12 @@ void write_dataset_with_poses(const Dataset& ds, const std::vector<Eigen::Isomet
                               const std::string& out_dir) {
   if (poses.size() != ds.frames.size())
     throw InputError(out_dir, "internal: one pose per frame expected");
-  const fs::path out(out_dir);
-  std::error_code ec;
-  const bool existed = fs::exists(out, ec);
-  if (existed && !(fs::is_directory(out, ec) && fs::is_empty(out, ec)))
+  std::error_code ec;  // never over a dataset, not even one we wrote: it may be the input
+  if (fs::exists(out_dir, ec) && !(fs::is_directory(out_dir, ec) && fs::is_empty(out_dir, ec)))
     throw InputError(out_dir, "the refined dataset's folder must be new or empty");
-  if (!existed) {
-    fs::create_directories(out, ec);
-    if (ec) throw InputError(out_dir, "cannot create folder: " + ec.message());
-  }
-  try {
+  StagedFolder staged(out_dir);  // whole or nothing, beside the target
+  const fs::path out = staged.path();
+  {
     // A dataset.json keeps everything it had (ground truth, robot, simulator); another layout
     // gets the keys every reader needs.
     const bool from_json = ds.raw.is_object() && ds.raw.contains("frames") &&
@@ -71,11 +68,8 @@ void write_dataset_with_poses(const Dataset& ds, const std::vector<Eigen::Isomet
     }
     write_file_atomically((out / "dataset.json").string(),
                           [&](std::ostream& o) { o << doc.dump(2) << "\n"; });
-  } catch (...) {
-    if (!existed) fs::remove_all(out, ec);
-    else for (const auto& e : fs::directory_iterator(out, ec)) fs::remove_all(e.path(), ec);
-    throw;
   }
+  staged.commit();
 }
 
 }  // namespace tunnelmap

@@ -18,8 +18,6 @@ struct SequenceExport {
   std::function<void(std::size_t, std::size_t, const std::string&)> progress;
   // One-line notes on what the export could not keep (null = silent).
   std::function<void(const std::string&)> note;
-  // A non-empty output folder this export may replace (null = only new or empty folders).
-  std::function<bool(const std::filesystem::path&)> replaceable;
 };
 
 }  // namespace tunnelmap

@@ -123,7 +123,7 @@ std::vector<TumPoseEntry> parse_tum_groundtruth(const std::string& text, const s
     for (int k = 1; k < 8; ++k) v[k] = scan.number(f[k], names[k]);
     for (int k = 1; k < 4; ++k)
       if (std::abs(v[k]) > kMaxTumTranslation)
-        scan.fail(std::string(names[k]) + " '" + f[k] + "' is out of range (|value| <= 1e9 m)");
+        scan.fail(std::string(names[k]) + " '" + f[k] + "' is out of range (|value| <= " + kMaxPoseTranslationText + ")");
     // File order qx qy qz qw; Eigen's constructor takes w first.
     Eigen::Quaterniond q(v[7], v[4], v[5], v[6]);
     const double norm = q.norm();

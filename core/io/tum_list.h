@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/io/input_limits.h"
+
 namespace tunnelmap {
 
 struct TumFileEntry {
@@ -23,7 +25,7 @@ struct TumPoseEntry {
 
 // Largest ground-truth coordinate accepted (metres): beyond it a pose is garbage, and blends of
 // such values could overflow.
-constexpr double kMaxTumTranslation = 1e9;
+constexpr double kMaxTumTranslation = kMaxPoseTranslationM;
 
 // Largest list file we read (a long sequence's ground truth is a few MB).
 constexpr std::size_t kMaxTumListBytes = 256u << 20;

@@ -12,6 +12,7 @@
 #include "core/io/tum_sidecar.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/image_file.h"
 
 namespace tunnelmap {
 
@@ -72,7 +73,7 @@ std::size_t write_depth_5000(const DepthFrame& f, double from_scale, const fs::p
       }
       img.at<std::uint16_t>(v, u) = static_cast<std::uint16_t>(out);
     }
-  if (!cv::imwrite(to.string(), img)) throw InputError(to.string(), "cannot write the image");
+  write_image_file(to.string(), img);
   return clipped;
 }
 
@@ -101,7 +102,7 @@ void write_tum_sequence(const Dataset& ds, const std::string& out_dir, const Seq
   const std::size_t n = ds.frames.size();
   if (n == 0) throw InputError(ds.json_path, "the dataset has no frames");
   const std::vector<std::string> times = timestamp_texts(ds, ex);
-  StagedFolder out(out_dir, ex.replaceable);
+  StagedFolder out(out_dir);
   make_folder(out.path() / "depth");
 
   std::string depth_txt = "# depth maps (written by TunnelMap)\n# timestamp filename\n";

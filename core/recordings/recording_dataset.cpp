@@ -10,6 +10,8 @@
 
 #include "core/io/dataset.h"
 #include "core/util/error.h"
+#include "core/util/image_file.h"
+#include "core/util/temp_registry.h"
 
 namespace tunnelmap::recordings {
 namespace fs = std::filesystem;
@@ -51,7 +53,7 @@ cv::Mat depth_mm(const DepthFrame& f, std::size_t& out_of_range) {
 }
 
 void write_png(const fs::path& path, const cv::Mat& m) {
-  if (!cv::imwrite(path.string(), m)) throw InputError(path.string(), "cannot write the image");
+  write_image_file(path.string(), m);
 }
 
 cv::Mat bgr_of(const DepthFrame& f) {
@@ -71,6 +73,7 @@ class ExtractedRecordingSource : public FrameSource {
   ~ExtractedRecordingSource() override {
     std::error_code ec;
     fs::remove_all(dir_, ec);
+    TempRegistry::remove(dir_);
   }
   std::size_t size() const override { return ds_.frames.size(); }
   DepthFrame load(std::size_t i) const override {
@@ -151,6 +154,7 @@ std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::
                                                const std::function<void(std::size_t)>& progress) {
   const RecordingFrames frames(rec, opt.recording, opt);
   const fs::path dir = make_temp_folder();
+  TempRegistry::add(dir);  // removed on SIGINT/SIGTERM too
   try {
     const Eigen::Vector3d up = opt.world_up ? opt.world_up->normalized() : Eigen::Vector3d::UnitZ();
     const RecordingExport ex = write_recording_dataset(frames, path, dir, up, progress);
@@ -163,6 +167,7 @@ std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::
   } catch (...) {
     std::error_code ec;
     fs::remove_all(dir, ec);
+    TempRegistry::remove(dir);
     throw;
   }
 }

@@ -8,12 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/io/output_folder.h"
 #include "core/kinematics/robot_json.h"
 #include "core/sim/sim_config_json.h"
 #include "core/sim/sim_girder.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/image_file.h"
 
 namespace tunnelmap {
 
@@ -21,44 +23,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-bool is_tunnelmap_dataset(const fs::path& dir) {
-  std::ifstream in(dir / "dataset.json");
-  if (!in) return false;
-  const json j = json::parse(in, nullptr, /*allow_exceptions=*/false);
-  return j.is_object() && j.value("format", std::string()) == kSimDatasetFormat;
-}
-
-// A folder we may write into: missing, empty, a dataset, or only our image subfolders
-// (left by an interrupted write, which has no dataset.json yet).
-void check_output_folder(const fs::path& dir) {
-  std::error_code ec;
-  if (!fs::exists(dir, ec)) return;
-  if (!fs::is_directory(dir, ec)) throw InputError(dir.string(), "exists and is not a folder");
-  if (is_tunnelmap_dataset(dir)) return;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    const bool ours = e.is_directory() && (name == "depth" || name == "rgb" || name == "gt");
-    if (!ours)
-      throw InputError(dir.string(),
-                       "folder is not empty and is not a tunnelmap dataset; refusing to write "
-                       "into it (choose a new or empty folder)");
-  }
-  if (ec) throw InputError(dir.string(), "cannot list the folder: " + ec.message());
-}
-
-void make_dir(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError(dir.string(), "cannot create folder: " + (ec ? ec.message() : "not a folder"));
-}
-
-void write_image(const std::string& path, const cv::Mat& image) {
-  write_path_atomically(path, [&](const std::string& tmp) {
-    if (!cv::imwrite(tmp, image)) throw InputError(path, "cannot write the image");
-  });
-}
 
 std::string frame_name(int i) {
   char buf[32];
@@ -170,11 +134,11 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config) {
 void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
                        const SimProgress& progress) {
   const TunnelSimulator sim(config);  // validates before touching the disk
-  const fs::path root(out_dir);
-  check_output_folder(root);
-  make_dir(root / "depth");
-  make_dir(root / "rgb");
-  make_dir(root / "gt");
+  StagedFolder out(out_dir);  // a new, empty or earlier simulated folder; whole or nothing
+  const fs::path root = out.path();
+  make_folder(root / "depth");
+  make_folder(root / "rgb");
+  make_folder(root / "gt");
 
   const Intrinsics K = Intrinsics::primesense_vga();
   json frames = json::array();
@@ -203,10 +167,10 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
         bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(rgb[2], rgb[1], rgb[0]);  // OpenCV writes BGR
       }
     const std::string name = frame_name(i);
-    write_image((root / "depth" / name).string(), depth);
+    write_image_file((root / "depth" / name).string(), depth);
     const std::string rgb_name = name.substr(0, name.rfind('.')) + "." + config.rgb_format;
-    write_image((root / "rgb" / rgb_name).string(), bgr);
-    write_image((root / "gt" / name).string(), gt);
+    write_image_file((root / "rgb" / rgb_name).string(), bgr);
+    write_image_file((root / "gt" / name).string(), gt);
 
     json fj = {{"depth", "depth/" + name},
                {"rgb", "rgb/" + rgb_name},
@@ -229,7 +193,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     }
     if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
     frames.push_back(fj);
-    if (progress) progress(i, sim.frame_count(), (root / "depth" / name).string());
+    if (progress) progress(i, sim.frame_count(), (out.target() / "depth" / name).string());
   }
 
   const bool sectioned = !config.sections.empty();
@@ -274,7 +238,8 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
       {"simulator", sim_config_to_json(config)}};
   if (robot_json.is_object()) dataset["robot"] = robot_json;
   write_file_atomically((root / "dataset.json").string(),
-                        [&](std::ostream& out) { out << dataset.dump(2) << "\n"; });
+                        [&](std::ostream& file) { file << dataset.dump(2) << "\n"; });
+  out.commit();
 }
 
 }  // namespace tunnelmap

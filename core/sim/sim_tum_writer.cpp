@@ -9,6 +9,7 @@
 #include "core/io/tum_writer.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/util/error.h"
+#include "core/util/temp_registry.h"
 
 namespace tunnelmap {
 
@@ -23,21 +24,14 @@ struct ScratchDataset {
     dir = out.parent_path() / ("." + out.filename().string() + ".sim-" + std::to_string(::getpid()));
     std::error_code ec;
     fs::remove_all(dir, ec);
+    TempRegistry::add(dir);
   }
   ~ScratchDataset() {
     std::error_code ec;
     fs::remove_all(dir, ec);
+    TempRegistry::remove(dir);
   }
 };
-
-void check_output(const fs::path& out) {
-  std::error_code ec;
-  if (!fs::exists(out, ec)) return;
-  if (!fs::is_directory(out, ec)) throw InputError(out.string(), "exists and is not a folder");
-  if (fs::is_empty(out, ec) || is_tunnelmap_tum_sequence(out)) return;
-  throw InputError(out.string(), "folder is not empty and is not a TUM sequence written by "
-                                 "tunnelmap; refusing to write into it (choose a new or empty folder)");
-}
 
 }  // namespace
 
@@ -46,7 +40,7 @@ void write_sim_tum_sequence(const std::string& out_dir, const SimConfig& config,
                             const std::function<void(const std::string&)>& note) {
   fs::path out = fs::absolute(out_dir).lexically_normal();
   if (out.filename().empty()) out = out.parent_path();
-  check_output(out);
+  StagedFolder{out.string()};  // refuses a folder we may not replace, before the simulation
   const fs::path created = first_missing_folder(out.parent_path());  // removed if we fail
   try {
     const ScratchDataset scratch(out);
@@ -54,7 +48,6 @@ void write_sim_tum_sequence(const std::string& out_dir, const SimConfig& config,
     const Dataset ds = read_dataset(scratch.dir.string());
     SequenceExport ex;
     for (std::size_t i = 0; i < ds.frames.size(); ++i) ex.poses.push_back(resolve_frame_pose(ds, i).pose);
-    ex.replaceable = is_tunnelmap_tum_sequence;
     ex.note = note;
     if (progress)
       ex.progress = [&](std::size_t i, std::size_t n, const std::string& depth) {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/util/error.h"
+#include "core/util/temp_registry.h"
 
 namespace tunnelmap {
 namespace fs = std::filesystem;
@@ -24,32 +25,25 @@ std::string temporary_name(const std::string& path) {
 }
 }  // namespace
 
-void check_output_path(const std::string& path) {
-  const fs::path p(path);
-  if (p.filename().empty()) throw InputError(path, "cannot write: not a file name");
-  const fs::path parent = p.parent_path();
-  if (!parent.empty() && !fs::is_directory(parent))
-    throw InputError(path, "cannot write: folder '" + parent.string() + "' does not exist");
-  if (fs::is_directory(p)) throw InputError(path, "cannot write: it is a folder");
-}
-
 void write_path_atomically(const std::string& path,
                            const std::function<void(const std::string&)>& write) {
-  const fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty() && !fs::is_directory(parent))
-    throw InputError(path, "cannot write: folder '" + parent.string() + "' does not exist");
-  const std::string tmp = temporary_name(path);
+  check_output_path(path);
+  const std::string target = output_target(path).string();
+  const std::string tmp = temporary_name(target);  // beside the target: rename stays atomic
+  TempRegistry::add(tmp);
   try {
     write(tmp);
     if (!fs::exists(tmp)) throw InputError(path, "cannot write: the writer produced no file");
     std::error_code ec;
-    fs::rename(tmp, path, ec);
+    fs::rename(tmp, target, ec);
     if (ec) throw InputError(path, "cannot write: " + ec.message());
   } catch (...) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
+    TempRegistry::remove(tmp);
     throw;
   }
+  TempRegistry::remove(tmp);
 }
 
 void write_file_atomically(const std::string& path,
@@ -59,6 +53,7 @@ void write_file_atomically(const std::string& path,
     if (!out) throw InputError(path, "cannot write: cannot create a file in that folder");
     write(out);
     out.flush();
+    out.close();  // the last buffered bytes can fail here too (disk full, file size limit)
     if (!out) throw InputError(path, "cannot write: write error (disk full?)");
   });
 }

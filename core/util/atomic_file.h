@@ -5,14 +5,13 @@
 #include <ostream>
 #include <string>
 
+#include "core/util/output_path.h"  // check_output_path: what may be written
+
 namespace tunnelmap {
 
-// Throws InputError naming `path` when it cannot be written (missing folder, a folder in the
-// way): called before long runs so that they fail at once, not after all the work.
-void check_output_path(const std::string& path);
-
 // Calls `write` with a binary stream on a temporary file next to `path`; on success renames it
-// over `path`. On any failure (exception from `write`, stream error, rename error) removes the
+// over `path` (over the file a symlink `path` points to, which keeps the link). Refuses what
+// check_output_path refuses. On any failure (exception from `write`, stream error, rename error) removes the
 // temporary file and throws InputError naming `path`.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write);
 

@@ -26,4 +26,12 @@ class ParameterError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An output that cannot be written as asked, found before any work: an output that
+// is a device, a FIFO or a folder, an output that is also an input, two outputs on one path.
+// A kind of ParameterError so that every front end reports it as bad usage (CLI exit code 2).
+class OutputPathError : public ParameterError {
+ public:
+  OutputPathError(const std::string& file, const std::string& problem) : ParameterError(file + ": " + problem) {}
+};
+
 }  // namespace tunnelmap

@@ -296,7 +296,7 @@ TEST(InspectionReport, UnwritablePathGivesInputErrorAndLeavesNoFile) {
   // The path is a folder: nothing replaces it and no temporary file stays beside it.
   const std::string folder = dir + "/report.pdf";
   fs::create_directories(folder);
-  EXPECT_THROW(write_inspection_report(folder, report_input(map, "")), InputError);
+  EXPECT_THROW(write_inspection_report(folder, report_input(map, "")), OutputPathError);  // bad usage
   EXPECT_TRUE(fs::is_directory(folder));
   int entries = 0;
   for (const auto& e : fs::directory_iterator(dir)) {

@@ -1,5 +1,7 @@
 #include "ui/report/inspection_report.h"
 
+#include <algorithm>
+#include <fstream>
 #include <QFontMetricsF>
 #include <QMarginsF>
 #include <QPageLayout>
@@ -75,7 +77,7 @@ report::FooterFn footer_for(const report::Document& doc, const InspectionReportI
   };
 }
 
-void write_pdf(const std::string& pdf_path, const std::string& tmp_path, const InspectionReportInput& in) {
+void paint_pdf(const std::string& pdf_path, const std::string& tmp_path, const InspectionReportInput& in) {
   QPdfWriter writer(QString::fromStdString(tmp_path));
   writer.setResolution(kDpi);
   writer.setPageSize(QPageSize(QPageSize::A4));
@@ -88,6 +90,25 @@ void write_pdf(const std::string& pdf_path, const std::string& tmp_path, const I
   build(doc, in);
   doc.render(painter, footer_for(doc, in));
   if (!painter.end()) throw InputError(pdf_path, "cannot write: the PDF could not be finished (disk full?)");
+}
+
+// Qt's PDF engine does not report failed writes (a full disk, a file size limit): the file it
+// leaves then stops short of the trailer's "%%EOF", which is the last thing it writes.
+bool ends_with_pdf_trailer(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 8) return false;
+  const std::streamoff tail = std::min<std::streamoff>(size, 32);
+  std::string last(static_cast<std::size_t>(tail), '\0');
+  in.seekg(size - tail);
+  in.read(last.data(), tail);
+  return in && last.find("%%EOF") != std::string::npos;
+}
+
+void write_pdf(const std::string& pdf_path, const std::string& tmp_path, const InspectionReportInput& in) {
+  paint_pdf(pdf_path, tmp_path, in);  // the writer closes its file when it goes out of scope
+  if (!ends_with_pdf_trailer(tmp_path))
+    throw InputError(pdf_path, "cannot write: the PDF is incomplete (disk full?)");
 }
 
 }  // namespace

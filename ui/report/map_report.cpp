@@ -7,6 +7,7 @@
 
 #include "core/export/map_ply.h"
 #include "core/export/plate_mesh.h"
+#include "core/util/temp_registry.h"
 #include "ui/report/inspection_report.h"
 #include "ui/report/report_map_image.h"
 
@@ -32,6 +33,7 @@ void write_map_report(const std::string& pdf_path, const std::string& input, con
   in.map = &map;
   const std::filesystem::path tmp =
       std::filesystem::temp_directory_path() / ("tunnelmap-report-" + std::to_string(getpid()));
+  TempRegistry::add(tmp);  // removed on SIGINT/SIGTERM too
   std::filesystem::create_directories(tmp);
   const std::string ply = map_ply.empty() ? (tmp / "map.ply").string() : map_ply;
   const std::string png = (tmp / "map.png").string();
@@ -47,9 +49,11 @@ void write_map_report(const std::string& pdf_path, const std::string& input, con
     write_inspection_report(pdf_path, in);
   } catch (...) {
     std::filesystem::remove_all(tmp);
+    TempRegistry::remove(tmp);
     throw;
   }
   std::filesystem::remove_all(tmp);
+  TempRegistry::remove(tmp);
 }
 
 }  // namespace tunnelmap

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/util/renderer_path.h"
+#include "core/util/temp_registry.h"
 
 extern char** environ;
 
@@ -67,9 +68,13 @@ bool render_map_image_with(const std::string& renderer, const std::string& map_p
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  unblock_interrupts_for_child(&attr);  // the renderer stops on Ctrl-C like any program
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, renderer.c_str(), &actions, nullptr, argv.data(), environ);
+  const int spawned = posix_spawn(&pid, renderer.c_str(), &actions, &attr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
   close(err[1]);
   if (spawned != 0) {
     close(err[0]);

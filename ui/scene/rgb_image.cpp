@@ -12,6 +12,7 @@
 
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/image_file.h"
 
 namespace tunnelmap::scene {
 
@@ -43,9 +44,7 @@ void save_png(const RgbImage& image, const std::string& path) {
   cv::Mat rgb(image.height, image.width, CV_8UC3, const_cast<std::uint8_t*>(image.rgb.data()));
   cv::Mat bgr;
   cv::cvtColor(rgb, bgr, cv::COLOR_RGB2BGR);
-  write_path_atomically(path, [&](const std::string& tmp) {
-    if (!cv::imwrite(tmp, bgr)) throw InputError(path, "cannot write PNG");
-  });
+  write_image_file(path, bgr);
 }
 
 RgbImage load_png(const std::string& path) {

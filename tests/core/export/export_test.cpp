@@ -269,9 +269,9 @@ TEST(MapPly, FailedWriteLeavesNoFileAndKeepsTheOldOne) {
   EXPECT_THROW(write_map_ply(in_missing_folder, hand_built_map(), test_params()), InputError);
   EXPECT_FALSE(fs::exists(in_missing_folder));
 
-  // Target is a folder: rename fails, the folder survives, nothing else appears.
+  // Target is a folder: refused as bad usage, the folder survives, nothing else appears.
   fs::create_directory(tmp.path() / "taken.ply");
-  EXPECT_THROW(write_map_ply(tmp.file("taken.ply"), hand_built_map(), test_params()), InputError);
+  EXPECT_THROW(write_map_ply(tmp.file("taken.ply"), hand_built_map(), test_params()), OutputPathError);
   EXPECT_TRUE(fs::is_directory(tmp.path() / "taken.ply"));
   EXPECT_EQ(folder_listing(tmp.path()), (std::vector<std::string>{"map.ply", "taken.ply"}));
 }

@@ -405,7 +405,8 @@ TEST(TumCli, SimulatedSequenceRoundTripsThroughTheTumLayout) {
     EXPECT_EQ(testing::read_binary_file(e.path().string()), testing::read_binary_file(conv + "/" + rel.string()))
         << rel;
   }
-  EXPECT_EQ(files, 4u + 6u + 6u);  // depth.txt, rgb.txt, groundtruth.txt, tunnelmap.json, images
+  // depth.txt, rgb.txt, groundtruth.txt, tunnelmap.json, the list of files written, images
+  EXPECT_EQ(files, 5u + 6u + 6u);
   EXPECT_FALSE(fs::exists(fs::path(tum) / "dataset.json"));
   // The depth is 5 units per millimetre.
   const cv::Mat mm = cv::imread(ds + "/depth/000002.png", cv::IMREAD_UNCHANGED);
@@ -509,7 +510,7 @@ TEST(TumCli, BadInputAndOptionsGiveOneLineErrorsAndNoOutput) {
   fs::create_directories(out);
   write_text_file(out + "/keep.txt", "mine");
   r = run_cli("convert " + s.path() + " " + out + " --to tum");
-  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.exit_code, 2);  // bad usage, refused before any work
   EXPECT_NE(r.err.find("not empty"), std::string::npos) << r.err;
   EXPECT_EQ(testing::slurp(out + "/keep.txt"), "mine");
   r = run_cli("convert " + (s.dir / "depth/1.png").string() + " " + s.tmp.file("x") + " --to tum");

@@ -380,7 +380,7 @@ TEST(SimTest, WritesADatasetFolderAndRefusesAForeignOne) {
   const fs::path foreign = fresh_dir("foreign");
   fs::create_directories(foreign);
   std::ofstream(foreign / "notes.txt") << "mine";
-  EXPECT_THROW(write_sim_dataset(foreign.string(), c), InputError);
+  EXPECT_THROW(write_sim_dataset(foreign.string(), c), OutputPathError);  // bad usage
   EXPECT_FALSE(fs::exists(foreign / "dataset.json"));
   EXPECT_FALSE(fs::exists(foreign / "depth"));
   fs::remove_all(dir);

@@ -1,0 +1,29 @@
+#pragma once
+// Every temporary file and folder a run creates (atomic outputs, staging folders, scratch
+// datasets) is registered here while it exists, so that an interrupted run can remove them
+// all: install_interrupt_cleanup() makes SIGINT and SIGTERM stop the program, remove every
+// registered path, print one line and exit 130 (SIGINT) or 143 (SIGTERM). Outputs that were
+// already in place are untouched: temporaries are renamed over them only when complete.
+//
+// No code runs in a signal handler: the signals are blocked in every thread and a watcher
+// thread takes them with sigwait(), so the cleanup may lock, allocate and walk folders.
+#include <spawn.h>
+
+#include <filesystem>
+#include <string>
+
+namespace tunnelmap {
+
+namespace TempRegistry {
+void add(const std::filesystem::path& path);     // call before creating it
+void remove(const std::filesystem::path& path);  // call once it is renamed into place or deleted
+}  // namespace TempRegistry
+
+// Call first thing in main(), before any thread starts (threads inherit the blocked signals).
+// `program` starts the one-line message.
+void install_interrupt_cleanup(const std::string& program);
+
+// The signal mask a child process should start with: none blocked (posix_spawn inherits ours).
+void unblock_interrupts_for_child(posix_spawnattr_t* attr);
+
+}  // namespace tunnelmap

@@ -1,0 +1,32 @@
+// Data problems are exit 3 and usage problems exit 2, each one line, however hostile the field
+// the message echoes.
+#include <nlohmann/json.hpp>
+
+#include "tests/hostile/hostile_checks.h"
+
+namespace tunnelmap::hostile {
+namespace {
+
+using Messages = WithSmallDataset;
+
+TEST_F(Messages, ZeroDepthScaleIsBadUsage) {
+  EXPECT_TRUE(exits_with_one_line(run_cli({"detect", ds(), "-q", "--depth-scale", "0"}), 2, "--depth-scale"));
+}
+
+TEST_F(Messages, AHugeFieldIsCutAndControlCharactersEscaped) {
+  const std::string hostile = std::string(100000, 'a') + "\n\r" + std::string(10, 'b') + ".png";
+  edit_index([&](nlohmann::json& j) { j["frames"][1]["depth"] = hostile; });
+  const Outcome o = run_cli({"detect", ds(), "-q"});
+  EXPECT_TRUE(exits_with_one_line(o, 3, index().string()));
+  EXPECT_LT(o.err.size(), 600u);
+}
+
+TEST_F(Messages, ANulInsideAFramePathIsRefused) {
+  edit_index([](nlohmann::json& j) { j["frames"][1]["depth"] = std::string("depth/000001.png\0.txt", 21); });
+  const Outcome o = run_cli({"detect", ds(), "-q"});
+  EXPECT_TRUE(exits_with_one_line(o, 3, index().string()));
+  EXPECT_NE(o.err.find("NUL"), std::string::npos) << o.err;
+}
+
+}  // namespace
+}  // namespace tunnelmap::hostile
