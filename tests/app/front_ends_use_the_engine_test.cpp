@@ -61,8 +61,8 @@ TEST(FrontEnds, RunTheirFramesThroughTheEngine) {
       {"app/cli/cmd_detect.cpp", "RunEngine"},           {"app/cli/cmd_planes.cpp", "run_frames("},
       {"app/cli/cmd_map.cpp", "map_dataset("},           {"app/cli/cmd_fuse.cpp", "fuse_dataset("},
       {"app/render/main.cpp", "run_frame("},             {"app/render/render_map.cpp", "map_dataset("},
-      {"ui/main_window_sequence.cpp", "RunEngine"},      {"ui/pipeline_runner.cpp", "run_frame("},
-      {"ui/live_view.cpp", "run_next("},                 {"ui/main_window_review.cpp", "map_dataset("},
+      {"ui/sequence_controller.cpp", "RunEngine"},      {"ui/pipeline_runner.cpp", "run_frame("},
+      {"ui/live_view.cpp", "run_next("},                 {"ui/review_controller.cpp", "map_dataset("},
       {"bench/sequence_bench.cpp", "RunEngine"},         {"core/mapping/dataset_mapping.cpp", "RunEngine"},
       {"core/fusion/fuse_dataset.cpp", "RunEngine"},
   };
