@@ -121,11 +121,15 @@ class Fields {
   bool u64(std::uint64_t& v) { return take(8) && (v = u64_at(at(8)), true); }
   bool bytes(std::size_t n, const std::uint8_t*& p) { return take(n) && (p = at(n), true); }
   // A length-prefixed string; the player compares it with strcmp, so it must end in a NUL.
+  // Bytes outside printable ASCII come back as '?' (no property name the player knows has one).
   bool text(std::size_t max_bytes, std::string& s) {
     std::uint32_t n = 0;
     const std::uint8_t* p = nullptr;
     if (!u32(n) || n == 0 || n > max_bytes || !bytes(n, p) || p[n - 1] != 0) return false;
     s.assign(reinterpret_cast<const char*>(p), std::strlen(reinterpret_cast<const char*>(p)));
+    // Names are echoed in messages: a damaged byte must not break the line or the encoding.
+    for (char& c : s)
+      if (c < 0x20 || c > 0x7e) c = '?';
     return true;
   }
   bool done() const { return pos_ == b_.size(); }
