@@ -341,6 +341,13 @@ def oni_file(w=8, h=6, frames=2):
     return b"NI10" + struct.pack("<BBHIQI", 1, 0, 1, 0, 2**64 - 1, 2) + body
 
 
+def json_depth_seeds():
+    put("json_depth", "depth64.json", "[" * 64 + "]" * 64)
+    put("json_depth", "depth65.json", "[" * 65 + "]" * 65)
+    put("json_depth", "brackets_in_strings.json", '{"a": "[[[[{{{{", "b": [[["\\"]]"]]], "c": {"d": [1, 2.5e3, null]}}')
+    put("json_depth", "unclosed.json", '{"frames": [[[' + "[" * 100)
+
+
 def oni_seeds():
     good = oni_file()
     put("oni_container", "depth_colour.oni", good)
@@ -352,4 +359,4 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--map-ply")
     a = ap.parse_args()
-    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds(); recording_seeds(); oni_seeds()
+    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds(); recording_seeds(); oni_seeds(); json_depth_seeds()
