@@ -1,5 +1,6 @@
 #include "core/io/oni_container.h"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -208,9 +209,10 @@ class RecordingCheck {
   }
 
   void check_file_header() {
-    if (bytes_.size() < kFileHeaderBytes) fail("shorter than its " + std::to_string(kFileHeaderBytes) + "-byte header");
-    bytes_.read(0, kFileHeaderBytes, buf_);
-    if (std::memcmp(buf_.data(), "NI10", 4) != 0) fail("no NI10 file marker (not an .oni recording)");
+    const std::size_t have = static_cast<std::size_t>(std::min<std::uint64_t>(bytes_.size(), kFileHeaderBytes));
+    bytes_.read(0, have, buf_);
+    if (have < 4 || std::memcmp(buf_.data(), "NI10", 4) != 0) fail("no NI10 file marker (not an .oni recording)");
+    if (have < kFileHeaderBytes) fail("shorter than its " + std::to_string(kFileHeaderBytes) + "-byte header");
     const std::uint8_t* v = buf_.data() + 4;
     const unsigned maintenance = static_cast<unsigned>(v[2] | (v[3] << 8));
     if (v[0] != 1 || v[1] != 0 || maintenance != 1 || u32_at(v + 4) != 0)
