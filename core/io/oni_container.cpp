@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <memory>
 #include <vector>
 
 #include "core/io/input_limits.h"
+#include "core/io/oni_bytes.h"
 #include "core/io/oni_payload.h"
 #include "core/util/error.h"
 
@@ -53,60 +52,6 @@ enum RecordType : std::uint32_t {
 };
 
 enum NodeType : std::uint32_t { kDepthNode = 2, kImageNode = 3, kIrNode = 4 };
-
-// Random access to the recording's bytes: a file (streamed, never held whole) or memory.
-class Bytes {
- public:
-  virtual ~Bytes() = default;
-  virtual std::uint64_t size() const = 0;
-  // Exactly n bytes at `offset` (inside size(), checked by the caller).
-  virtual void read(std::uint64_t offset, std::size_t n, std::vector<std::uint8_t>& out) const = 0;
-};
-
-class MemoryBytes : public Bytes {
- public:
-  MemoryBytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint64_t size() const override { return size_; }
-  void read(std::uint64_t offset, std::size_t n, std::vector<std::uint8_t>& out) const override {
-    out.assign(data_ + offset, data_ + offset + n);
-  }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-};
-
-class FileBytes : public Bytes {
- public:
-  explicit FileBytes(const std::string& path) : path_(path), in_(path, std::ios::binary) {
-    if (!in_) throw InputError(path, "cannot open");
-    in_.seekg(0, std::ios::end);
-    size_ = static_cast<std::uint64_t>(in_.tellg());
-  }
-  std::uint64_t size() const override { return size_; }
-  void read(std::uint64_t offset, std::size_t n, std::vector<std::uint8_t>& out) const override {
-    out.resize(n);
-    in_.seekg(static_cast<std::streamoff>(offset));
-    if (!in_.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(n)))
-      throw InputError(path_, "cannot read " + std::to_string(n) + " bytes at byte " + std::to_string(offset));
-  }
-
- private:
-  std::string path_;
-  mutable std::ifstream in_;
-  std::uint64_t size_ = 0;
-};
-
-std::uint32_t u32_at(const std::uint8_t* p) {
-  std::uint32_t v;
-  std::memcpy(&v, p, 4);  // the format is little-endian, as every machine OpenNI2 runs on
-  return v;
-}
-std::uint64_t u64_at(const std::uint8_t* p) {
-  std::uint64_t v;
-  std::memcpy(&v, p, 8);
-  return v;
-}
 
 struct RecordHeader {
   std::uint64_t position = 0;
