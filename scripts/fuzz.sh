@@ -25,8 +25,8 @@ echo "fuzz.sh: build took $((built - start)) s; fuzzing each target for ${second
 
 # Longest input per target: a little above the largest seed, small enough to stay fast.
 declare -A max_len=([dataset_json]=4096 [preset_json]=2048 [depth_png]=16384 [pcd]=8192 [ply]=8192 [tum_list]=4096
-                   [mcap_records]=8192 [ros1_records]=8192 [cdr_messages]=4096)
-targets=(dataset_json preset_json depth_png pcd ply tum_list mcap_records ros1_records cdr_messages)
+                   [mcap_records]=8192 [ros1_records]=8192 [cdr_messages]=4096 [oni_container]=8192 [json_depth]=4096)
+targets=(dataset_json preset_json depth_png pcd ply tum_list mcap_records ros1_records cdr_messages oni_container json_depth)
 
 run_one() {
   local t=$1 work="$build/fuzz-work/$1" findings="$build/findings/$1" log="$build/fuzz-$1.log"

@@ -103,6 +103,7 @@ ReadOptions InputOptions::read_options() const {
     const auto v = parse_numbers(world_up, 3, "--world-up");
     const Eigen::Vector3d u(v[0], v[1], v[2]);
     if (u.norm() < 1e-9) throw ParameterError("--world-up must not be the zero vector");
+    if (!std::isfinite(u.norm())) throw ParameterError("--world-up is too long (its length overflows a double)");
     r.world_up = u.normalized();
   }
   r.note = [](const std::string& line) { std::fprintf(stderr, "tunnelmap-cli: note: %s\n", line.c_str()); };
@@ -122,6 +123,7 @@ std::optional<Eigen::Vector3d> InputOptions::camera_up() const {
   const auto v = parse_numbers(up, 3, "--up");
   const Eigen::Vector3d u(v[0], v[1], v[2]);
   if (u.norm() < 1e-9) throw ParameterError("--up must not be the zero vector");
+  if (!std::isfinite(u.norm())) throw ParameterError("--up is too long (its length overflows a double)");
   return u.normalized();
 }
 

@@ -174,6 +174,7 @@ Dataset read_dataset_json(const std::string& dir_or_json_path) {
     if (up.size() != 3) c.fail("up", "must have 3 numbers");
     d.up = Eigen::Vector3d(up[0], up[1], up[2]);
     if (!(d.up.norm() > 1e-9)) c.fail("up", "must not be the zero vector");
+    if (!std::isfinite(d.up.norm())) c.fail("up", "is too long (its length overflows a double)");
     d.up.normalize();
   }
 

@@ -8,6 +8,7 @@
 
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/sibling_name.h"
 #include "core/util/temp_registry.h"
 
 namespace tunnelmap {
@@ -72,7 +73,7 @@ StagedFolder::StagedFolder(const std::string& target) {
     }
   }
   created_ = first_missing_folder(target_.parent_path());
-  staging_ = target_.parent_path() / ("." + target_.filename().string() + ".tmp-" + unique_suffix());
+  staging_ = sibling_name(target_, ".", ".tmp-" + unique_suffix(), false);
   TempRegistry::add(created_.empty() ? staging_ : created_);  // before it exists: no window
   make_folder(target_.parent_path());
   make_folder(staging_);
@@ -91,7 +92,7 @@ void StagedFolder::commit() {
   std::error_code ec;
   fs::path old;
   if (replace_) {
-    old = target_.parent_path() / ("." + target_.filename().string() + ".old-" + unique_suffix());
+    old = sibling_name(target_, ".", ".old-" + unique_suffix(), false);
     fs::rename(target_, old, ec);
     if (ec) throw InputError(target_.string(), "cannot replace the folder: " + ec.message());
   } else if (is_empty_folder(target_)) {

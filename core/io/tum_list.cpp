@@ -15,15 +15,19 @@ namespace {
 // checks the field count and the timestamps (first field) as it goes.
 class ListScanner {
  public:
+  // A UTF-8 byte order mark (as Windows editors write) is skipped, not read as part of the
+  // first field.
   ListScanner(const std::string& text, std::string path, std::size_t fields, std::string layout)
-      : text_(text), path_(std::move(path)), fields_(fields), layout_(std::move(layout)) {}
+      : text_(text), path_(std::move(path)), fields_(fields), layout_(std::move(layout)),
+        pos_(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0) {}
 
   // Next data line's fields; false at the end.
   bool next(std::vector<std::string>& out, double& timestamp) {
     while (pos_ < text_.size()) {
-      const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+      // Lines end in LF, CR LF or a lone CR (classic Mac editors).
+      const std::size_t end = std::min(text_.find_first_of("\r\n", pos_), text_.size());
       const std::string line = text_.substr(pos_, end - pos_);
-      pos_ = end + 1;
+      pos_ = end + (text_.compare(end, 2, "\r\n") == 0 ? 2 : 1);
       ++line_;
       split(line, out);
       if (out.empty() || out[0][0] == '#') continue;
@@ -89,7 +93,7 @@ class ListScanner {
   std::string path_;
   std::size_t fields_;
   std::string layout_;
-  std::size_t pos_ = 0;
+  std::size_t pos_;
   int line_ = 0;
   bool have_previous_ = false;
   double previous_ = 0;

@@ -63,6 +63,7 @@ TumSidecar read_tum_sidecar(const std::string& path) {
       v[i] = u[i].get<double>();
     }
     if (!(v.norm() > 1e-9)) k.fail("up", "must not be the zero vector");
+    if (!std::isfinite(v.norm())) k.fail("up", "is too long (its length overflows a double)");
     s.up = v.normalized();
   }
   if (j.contains("ground_truth")) {

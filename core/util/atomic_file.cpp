@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/util/error.h"
+#include "core/util/sibling_name.h"
 #include "core/util/temp_registry.h"
 
 namespace tunnelmap {
@@ -17,11 +18,7 @@ std::string temporary_name(const std::string& path) {
   // once must not share (race on) one engine, and each is seeded from random_device so their
   // temporary names differ; a local engine would read random_device on every file.
   static thread_local std::mt19937_64 rng{std::random_device{}()};
-  const fs::path p(path);
-  // Keep the extension last: OpenCV and VTK choose the format from it.
-  return (p.parent_path() / (p.stem().string() + ".tmp-" + std::to_string(rng() % 1000000) +
-                             p.extension().string()))
-      .string();
+  return sibling_name(path, "", ".tmp-" + std::to_string(rng() % 1000000), true).string();
 }
 }  // namespace
 

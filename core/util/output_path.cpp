@@ -3,6 +3,7 @@
 #include <array>
 
 #include "core/util/error.h"
+#include "core/util/sibling_name.h"
 
 namespace tunnelmap {
 namespace fs = std::filesystem;
@@ -72,6 +73,9 @@ void check_output_path(const std::string& path) {
   const fs::path target = output_target(path);
   if (target.filename().empty() || target.filename() == "." || target.filename() == "..")
     throw OutputPathError(path, "cannot write: not a file name");
+  if (const std::size_t bytes = target.filename().string().size(); bytes > kMaxFileNameBytes)
+    throw OutputPathError(path, "cannot write: its name is " + std::to_string(bytes) + " bytes, over the limit of " +
+                                    std::to_string(kMaxFileNameBytes) + " for a file name");
   std::error_code ec;
   const fs::file_status st = fs::status(target, ec);
   if (fs::exists(st) && !fs::is_regular_file(st))

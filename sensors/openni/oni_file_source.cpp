@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "core/io/oni_container.h"
 #include "core/util/error.h"
 #include "sensors/openni/openni_context.h"
 #include "sensors/openni/stream_conversion.h"
@@ -38,9 +39,11 @@ struct OniFileSource::Player {
 };
 
 OniFileSource::OniFileSource(std::string path, ReadOptions opt) : path_(std::move(path)) {
-  ensure_initialized();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path_, ec)) throw InputError(path_, "not found");
+  // OpenNI's player trusts the file and can crash or hang the process on a damaged one.
+  oni::check_recording_file(path_);
+  ensure_initialized();
   player_ = open_player();
   count_ = static_cast<std::size_t>(player_->frames);
   has_color_ = player_->color.isValid();

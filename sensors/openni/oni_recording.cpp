@@ -7,6 +7,7 @@
 
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
+#include "core/util/sibling_name.h"
 #include "sensors/openni/oni_file_source.h"
 #include "sensors/openni/openni_context.h"
 
@@ -17,8 +18,7 @@ OniRecording::OniRecording(LiveDevice& device, std::string out_path) : out_(std:
   check_output_path(out_);
   // Same folder (rename stays atomic), ".oni" suffix kept for tools that look at it.
   const fs::path target(out_);
-  tmp_ = (target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(getpid()) + ".oni"))
-             .string();
+  tmp_ = sibling_name(target, ".", ".tmp-" + std::to_string(getpid()) + ".oni", false).string();
   if (recorder_.create(tmp_.c_str()) != openni::STATUS_OK)
     throw InputError(out_, "cannot create the recording: " + last_error());
   if (recorder_.attach(device.depth_stream()) != openni::STATUS_OK)

@@ -273,8 +273,90 @@ def recording_seeds():
     put("cdr_messages", "tf.cdr", cdr_tf("odom", "camera", (1.0, 2.0, 3.0)))
 
 
+# ------------------------------------------------------------------ OpenNI recording (.oni)
+def oni_record(typ, node, fields=b"", payload=b"", undo=0):
+    return struct.pack("<IIIIIQ", 0x0052494E, typ, node, 28 + len(fields), len(payload), undo) + fields + payload
+
+
+def oni_text(s):
+    return struct.pack("<I", len(s) + 1) + s.encode() + b"\0"
+
+
+def oni_property(typ, node, name, data):
+    return oni_record(typ, node, oni_text(name) + struct.pack("<I", len(data)) + data)
+
+
+def code16z_table(values):
+    """OpenNI's 16zT depth code: a table of the distinct values, then their indices as differences."""
+    table = sorted(set(values))
+    idx = [table.index(v) for v in values]
+    out = struct.pack("<H", len(table)) + b"".join(struct.pack("<H", v) for v in table) + struct.pack("<H", idx[0])
+    last, i = idx[0], 1
+    while i < len(idx):
+        run = 0
+        while i + 2 * run + 1 < len(idx) and idx[i + 2 * run] == last and idx[i + 2 * run + 1] == last and run < 15:
+            run += 1
+        if run:
+            out += bytes([0xE0 + run])
+            i += 2 * run
+            continue
+        d = last - idx[i]
+        if abs(d) <= 6:
+            out += bytes([((d + 6) << 4) | 0x0D])
+        elif -64 <= d <= 63:
+            out += bytes([0xFF, d + 192])
+        else:
+            out += bytes([0xFF]) + struct.pack(">H", idx[i])
+        last = idx[i]
+        i += 1
+    return out
+
+
+def oni_stream(node, name, node_type, codec, frames, w, h, oni_format, bpp):
+    added = oni_text(name) + struct.pack("<I", node_type) + codec + struct.pack("<IQQQ", frames, 0, 33333 * frames, 0)
+    return (oni_record(13, node, added)
+            + oni_property(3, node, "oniRequiredFrameSize", struct.pack("<Q", w * h * bpp))
+            + oni_property(3, node, "xnSupportedMapOutputModesCount", struct.pack("<Q", 1))
+            + oni_property(6, node, "xnSupportedMapOutputModes", struct.pack("<III", w, h, 30))
+            + oni_property(6, node, "xnMapOutputMode", struct.pack("<III", w, h, 30))
+            + oni_property(3, node, "oniPixelFormat", struct.pack("<Q", oni_format))
+            + oni_property(6, node, "xnFOV", struct.pack("<dd", 1.0, 0.8))
+            + oni_property(6, node, "xnCropping", struct.pack("<IHHHH", 0, 0, 0, w, h))
+            + (oni_property(3, node, "xnDeviceMaxDepth", struct.pack("<Q", 10000)) if node_type == 2 else b""))
+
+
+def oni_file(w=8, h=6, frames=2):
+    """Depth (16zT) and colour (uncompressed) frames as OpenNI2's recorder lays them out."""
+    body = oni_stream(1, "Depth", 2, b"16zT", frames, w, h, 100, 2) + oni_stream(2, "Image", 3, b"NONE", frames, w, h, 200, 3)
+    body += oni_record(9, 1) + oni_record(8, 1, struct.pack("<IQ", 0xFFFFFFFF, 2**64 - 1))
+    body += oni_record(9, 2) + oni_record(8, 2, struct.pack("<IQ", 0xFFFFFFFF, 2**64 - 1))
+    for f in range(frames):
+        depth = [0 if (u + v + f) % 5 == 0 else 1000 + 7 * u + 90 * v for v in range(h) for u in range(w)]
+        rgb = bytes((u * 30 + v * 7 + f) & 0xFF for v in range(h) for u in range(w * 3))
+        stamp = struct.pack("<QI", 33333 * f, f + 1)
+        body += oni_record(10, 2, stamp, rgb) + oni_record(10, 1, stamp, code16z_table(depth))
+    for node in (1, 2):
+        body += oni_record(7, node) + oni_record(14, node, b"", b"\0" * 20 * (frames + 1))
+    body += oni_record(11, 0)
+    return b"NI10" + struct.pack("<BBHIQI", 1, 0, 1, 0, 2**64 - 1, 2) + body
+
+
+def json_depth_seeds():
+    put("json_depth", "depth64.json", "[" * 64 + "]" * 64)
+    put("json_depth", "depth65.json", "[" * 65 + "]" * 65)
+    put("json_depth", "brackets_in_strings.json", '{"a": "[[[[{{{{", "b": [[["\\"]]"]]], "c": {"d": [1, 2.5e3, null]}}')
+    put("json_depth", "unclosed.json", '{"frames": [[[' + "[" * 100)
+
+
+def oni_seeds():
+    good = oni_file()
+    put("oni_container", "depth_colour.oni", good)
+    put("oni_container", "cut.oni", good[: len(good) // 2])
+    put("oni_container", "one_frame.oni", oni_file(16, 4, 1))
+
+
 if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--map-ply")
     a = ap.parse_args()
-    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds(); recording_seeds()
+    png_seeds(); pcd_seeds(); ply_seeds(a.map_ply); json_seeds(); tum_seeds(); recording_seeds(); oni_seeds(); json_depth_seeds()

@@ -26,8 +26,8 @@ std::string slurp(const std::string& path) {
 }
 
 // In the child between fork and exec: only async-signal-safe calls.
-[[noreturn]] void exec_child(const std::vector<char*>& argv, const Limits& limits, const std::string& out,
-                             const std::string& err, const std::string& working_dir) {
+[[noreturn]] void exec_child(const std::vector<char*>& argv, char* const* envp, const Limits& limits,
+                             const std::string& out, const std::string& err, const std::string& working_dir) {
 #ifndef TUNNELMAP_SANITIZED
   const rlimit as{limits.address_space_bytes, limits.address_space_bytes};
   setrlimit(RLIMIT_AS, &as);
@@ -44,7 +44,7 @@ std::string slurp(const std::string& path) {
   dup2(in_fd, 0);
   dup2(out_fd, 1);
   dup2(err_fd, 2);
-  execv(argv[0], argv.data());
+  execve(argv[0], argv.data(), envp);
   _exit(127);
 }
 
@@ -56,9 +56,24 @@ bool blocks(pid_t pid, int signal) {
   return false;
 }
 
+// The test's environment with `extra` ("NAME=VALUE") added, a name given there replacing its own.
+std::vector<std::string> child_environment(const std::vector<std::string>& extra) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry = *e;
+    const std::string name = entry.substr(0, entry.find('=') + 1);
+    bool replaced = false;
+    for (const std::string& x : extra) replaced = replaced || x.rfind(name, 0) == 0;
+    if (!replaced) env.push_back(entry);
+  }
+  env.insert(env.end(), extra.begin(), extra.end());
+  return env;
+}
+
 }  // namespace
 
-Outcome run_cli(const std::vector<std::string>& args, const Limits& limits, const std::string& working_dir) {
+Outcome run_cli(const std::vector<std::string>& args, const Limits& limits, const std::string& working_dir,
+                const std::vector<std::string>& environment) {
   testing::IoTempDir io;
   const std::string out = io.file("stdout"), err = io.file("stderr");
   std::vector<std::string> all{TUNNELMAP_CLI_PATH};
@@ -66,10 +81,14 @@ Outcome run_cli(const std::vector<std::string>& args, const Limits& limits, cons
   std::vector<char*> argv;
   for (std::string& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
+  std::vector<std::string> env = child_environment(environment);
+  std::vector<char*> envp;
+  for (std::string& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
 
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
-  if (pid == 0) exec_child(argv, limits, out, err, working_dir);
+  if (pid == 0) exec_child(argv, envp.data(), limits, out, err, working_dir);
   Outcome o;
   int status = 0;
   rusage usage{};

@@ -33,7 +33,8 @@ struct Outcome {
   std::string out, err;
 };
 
+// `environment`: "NAME=VALUE" entries added to (or replacing those of) the test's own.
 Outcome run_cli(const std::vector<std::string>& args, const Limits& limits = {},
-                const std::string& working_dir = {});
+                const std::string& working_dir = {}, const std::vector<std::string>& environment = {});
 
 }  // namespace tunnelmap::hostile

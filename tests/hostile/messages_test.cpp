@@ -28,5 +28,26 @@ TEST_F(Messages, ANulInsideAFramePathIsRefused) {
   EXPECT_NE(o.err.find("NUL"), std::string::npos) << o.err;
 }
 
+// The summary line of `detect` (stdout's last line).
+std::string summary(const Outcome& o) { return o.out.substr(o.out.rfind("summary:")); }
+
+TEST_F(Messages, AnAbsurdUpVectorIsADataProblemNamingTheDataset) {
+  for (const char* up : {"[0,0,0]", "[1e308,1e308,0]"}) {
+    edit_index([&](nlohmann::json& j) { j["up"] = nlohmann::json::parse(up); });
+    const Outcome o = run_cli({"detect", ds(), "-q"});
+    EXPECT_TRUE(exits_with_one_line(o, 3, index().string())) << up;
+    EXPECT_NE(o.err.find("key 'up'"), std::string::npos) << o.err;
+  }
+}
+
+TEST_F(Messages, AnUpVectorOfAnyLengthIsItsDirection) {
+  const Outcome unit = run_cli({"detect", ds(), "-q"});
+  edit_index([](nlohmann::json& j) { j["up"] = nlohmann::json::array({0, 0, 2.5}); });
+  const Outcome longer = run_cli({"detect", ds(), "-q"});
+  ASSERT_EQ(unit.exit_code, 0) << unit.err;
+  ASSERT_EQ(longer.exit_code, 0) << longer.err;
+  EXPECT_EQ(summary(longer).substr(0, summary(longer).find(", median")), summary(unit).substr(0, summary(unit).find(", median")));
+}
+
 }  // namespace
 }  // namespace tunnelmap::hostile

@@ -57,6 +57,21 @@ TEST(TumList, SkipsCommentsAndBlankLinesAndKeepsLineNumbers) {
   EXPECT_TRUE(parse_tum_file_list("# only a comment\n", "rgb.txt").empty());
 }
 
+TEST(TumList, AByteOrderMarkAndLoneCarriageReturnsAreReadAsWindowsAndOldMacEditorsMeanThem) {
+  const std::string text = "\xEF\xBB\xBF# depth maps\r1.25 depth/a.png\r\r2.5 depth/b.png\r";
+  const auto list = parse_tum_file_list(text, "depth.txt");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_DOUBLE_EQ(list[0].timestamp_s, 1.25);
+  EXPECT_EQ(list[0].path, "depth/a.png");
+  EXPECT_EQ(list[0].line, 2);
+  EXPECT_DOUBLE_EQ(list[1].timestamp_s, 2.5);
+  EXPECT_EQ(list[1].line, 4);
+  // A data line right after the mark: the mark is not part of the timestamp.
+  const auto gt = parse_tum_groundtruth("\xEF\xBB\xBF" "1.5 1 2 3 0 0 0.6 0.8\r\n", "groundtruth.txt");
+  ASSERT_EQ(gt.size(), 1u);
+  EXPECT_DOUBLE_EQ(gt[0].timestamp_s, 1.5);
+}
+
 TEST(TumList, GroundTruthIsXyzThenQxQyQzQw) {
   const auto gt = parse_tum_groundtruth("# timestamp tx ty tz qx qy qz qw\n1.5 1 2 3 0 0 0.6 0.8\n", "gt.txt");
   ASSERT_EQ(gt.size(), 1u);
