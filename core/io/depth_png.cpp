@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/io/input_limits.h"
+#include "core/io/png_decode.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -148,21 +149,11 @@ DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::s
                                describe_png_type(header) +
                                " image; depth PNGs must be 16-bit single channel");
   require_png_end(bytes, path);
-  const cv::Mat img = decode(bytes, path);
-  if (img.type() != CV_16UC1)
-    throw InputError(path, "depth PNGs must be 16-bit single channel");
-  if (img.cols != header.width || img.rows != header.height)
-    throw InputError(path, "corrupt PNG: decoded size differs from its header");
-
   DepthFrame f;
-  f.width = img.cols;
-  f.height = img.rows;
-  f.depth.resize(static_cast<std::size_t>(f.width) * f.height);
-  for (int v = 0; v < f.height; ++v) {
-    const auto* row = img.ptr<std::uint16_t>(v);
-    float* out = f.depth.data() + static_cast<std::size_t>(v) * f.width;
-    for (int u = 0; u < f.width; ++u) out[u] = static_cast<float>(row[u]);
-  }
+  const std::vector<std::uint16_t> raw = decode_png_grey16(bytes, path, f.width, f.height);
+  if (f.width != header.width || f.height != header.height)
+    throw InputError(path, "corrupt PNG: decoded size differs from its header");
+  f.depth.assign(raw.begin(), raw.end());
   f.depth_units_per_m = opt.depth_units_per_m;
   f.intrinsics = intrinsics_for_image(opt, f.width, f.height);
   f.source = path;
@@ -180,11 +171,13 @@ std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& byte
   // Only the two formats datasets use: OpenCV's other decoders (TIFF, EXR, ...) stay unreachable.
   if (!is_png && !is_jpeg) throw InputError(path, "is neither a PNG nor a JPEG image");
   if (is_png) {
-    parse_png_header(bytes, path);
+    const PngHeader header = parse_png_header(bytes, path);
+    const bool rgb = (header.colour_type == 2 && header.bit_depth == 8) || header.colour_type == 3;  // or a palette
+    if (!rgb) throw InputError(path, "RGB images must be 8-bit 3-channel colour (" + describe_png_type(header) + ")");
     require_png_end(bytes, path);
-  } else {
-    check_jpeg_size(bytes, path);
+    return decode_png_rgb8(bytes, path, width, height);
   }
+  check_jpeg_size(bytes, path);
   const cv::Mat img = decode(bytes, path);
   if (img.type() != CV_8UC3)
     throw InputError(path, "RGB images must be 8-bit 3-channel colour");

@@ -1,6 +1,10 @@
 // Data problems are exit 3 and usage problems exit 2, each one line, however hostile the field
 // the message echoes.
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "tests/hostile/hostile_checks.h"
 
@@ -26,6 +30,26 @@ TEST_F(Messages, ANulInsideAFramePathIsRefused) {
   const Outcome o = run_cli({"detect", ds(), "-q"});
   EXPECT_TRUE(exits_with_one_line(o, 3, index().string()));
   EXPECT_NE(o.err.find("NUL"), std::string::npos) << o.err;
+}
+
+// libpng's own "libpng error: …" line used to come first; its reason is now in the tool's line.
+TEST_F(Messages, ACorruptPngIsOneLineWithLibpngsReason) {
+  const std::filesystem::path png = dir() / "ds" / "depth" / "000001.png";
+  std::vector<char> bytes;
+  {
+    std::ifstream in(png, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string file(bytes.begin(), bytes.end());
+  const std::size_t idat = file.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  ASSERT_LT(idat + 60, bytes.size());
+  bytes[idat + 50] = static_cast<char>(bytes[idat + 50] ^ 0xff);  // inside the compressed data
+  std::ofstream(png, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  const Outcome o = run_cli({"detect", png.string(), "-q"});
+  EXPECT_TRUE(exits_with_one_line(o, 3, png.string()));
+  EXPECT_NE(o.err.find("corrupt PNG: "), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find("libpng"), std::string::npos) << o.err;
 }
 
 // The summary line of `detect` (stdout's last line).

@@ -78,6 +78,7 @@ report::FooterFn footer_for(const report::Document& doc, const InspectionReportI
 }
 
 void paint_pdf(const std::string& pdf_path, const std::string& tmp_path, const InspectionReportInput& in) {
+  const report::QuietQtWarnings quiet;
   QPdfWriter writer(QString::fromStdString(tmp_path));
   writer.setResolution(kDpi);
   writer.setPageSize(QPageSize(QPageSize::A4));

@@ -7,6 +7,16 @@
 
 namespace tunnelmap::report {
 
+namespace {
+void critical_only(QtMsgType type, const QMessageLogContext&, const QString& msg) {
+  if (type == QtFatalMsg || type == QtCriticalMsg) fprintf(stderr, "%s\n", qPrintable(msg));
+}
+}  // namespace
+
+QuietQtWarnings::QuietQtWarnings() : previous_(qInstallMessageHandler(critical_only)) {}
+
+QuietQtWarnings::~QuietQtWarnings() { qInstallMessageHandler(previous_); }
+
 void ensure_gui_application() {
   QCoreApplication* existing = QCoreApplication::instance();
   if (qobject_cast<QGuiApplication*>(existing)) return;
@@ -20,14 +30,10 @@ void ensure_gui_application() {
   static char* argv[] = {name, nullptr};
   // Qt's start-up warnings (e.g. "XDG_RUNTIME_DIR not set") are noise in a CLI's output: drop
   // them while the application starts, then restore the previous handler.
-  const QtMessageHandler previous = qInstallMessageHandler(
-      [](QtMsgType type, const QMessageLogContext&, const QString& msg) {
-        if (type == QtFatalMsg || type == QtCriticalMsg) fprintf(stderr, "%s\n", qPrintable(msg));
-      });
+  const QuietQtWarnings quiet;
   // Never destroyed: it must outlive every font and painter, up to process exit.
   static QGuiApplication* app = new QGuiApplication(argc, argv);
   (void)app;
-  qInstallMessageHandler(previous);
 }
 
 }  // namespace tunnelmap::report
