@@ -162,6 +162,9 @@ void write_doc(const std::vector<Row>& rows) {
      << "  yet tested: a frame 50 km from the others still integrates for over a minute first).\n"
      << "  `--depth-scale 0` is refused (exit 2). The error line is cut after 400 characters and its\n"
      << "  control characters are shown as `\\xNN`, so a hostile field cannot make it long or split it.\n"
+     << "  PNGs are decoded through libpng with its messages routed: a corrupt PNG is one line,\n"
+     << "  `corrupt PNG: <libpng's reason>`, and libpng's own warnings never reach stderr; Qt's warnings\n"
+     << "  are silent while the PDF report is painted (its own checks name the file).\n"
      << "  *Tests:* `Messages.*`.\n\n"
      << "- **`.oni` recordings are checked before OpenNI2 opens them** (core/io/oni_container.h,\n"
      << "  core/io/oni_payload.h). OpenNI2's player trusts the file (one changed byte could crash it with\n"
@@ -182,8 +185,8 @@ void write_doc(const std::vector<Row>& rows) {
      << "  usage before any work (exit 2). An `up` of zero or overflowing length in dataset.json is a data\n"
      << "  problem (exit 3); any other length is its direction. *Tests:* `TextLists.*`, `LongNames.*`,\n"
      << "  `Messages.*Up*`. The JSON nesting limit has its own fuzz target (`json_depth`).\n\n"
-     << "Not yet covered: libpng/Qt warnings on stderr when reading. A NUL inside a frame path in\n"
-     << "dataset.json is refused (exit 3).\n\n"
+     << "A NUL inside a frame path in dataset.json is refused (exit 3). Not yet covered: JPEG colour\n"
+     << "images still decode through OpenCV, whose libjpeg may print a warning line of its own.\n\n"
      << "| Input | Command | Exit status | Message |\n|---|---|---|---|\n";
   for (const Row& r : rows)
     md << "| " << cell(r.input) << " | `" << cell(r.command) << "` | " << r.status << " | " << cell(r.message) << " |\n";
