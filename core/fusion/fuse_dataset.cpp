@@ -40,6 +40,19 @@ Eigen::Matrix3d heading_lattice(const TunnelMap& map, const Eigen::Vector3d& wor
   if (std::abs(off_axis) < M_PI / 180.0) return Eigen::Matrix3d::Identity();
   return Eigen::AngleAxisd(off_axis, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
+// Every fused point lies within max_depth of its camera, so cameras further apart than the
+// volume may span plus twice that depth make data too wide to fuse: refused before a frame is
+// read (detecting every frame first took over a minute for a frame 50 km from the others).
+void check_camera_span(const std::vector<Eigen::Isometry3d>& poses, const FusionOptions& fo) {
+  Eigen::AlignedBox3d cameras;
+  for (const Eigen::Isometry3d& p : poses) cameras.extend(p.translation());
+  const double least_data_span = (cameras.max() - cameras.min()).maxCoeff() - 2.0 * fo.max_depth_m;
+  if (least_data_span > fo.max_extent_m)
+    throw FusionDataError("fusion: the cameras are " + std::to_string(least_data_span + 2.0 * fo.max_depth_m) +
+                          " m apart, so the data spans more than " + std::string(fusion_keys::max_extent_m.key) +
+                          " = " + std::to_string(fo.max_extent_m) + " m");
+}
+
 }  // namespace
 
 FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const FuseSettings& s) {
@@ -69,6 +82,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     poses.push_back(*rp.pose);
     r.frames.push_back(std::move(ff));
   }
+  check_camera_span(poses, fo);
   // Detection through the run engine (frames independent: the map gives the context below).
   RunSettings settings;
   settings.params = params;

@@ -46,6 +46,21 @@ TEST_F(InputLimits, AnAbsurdPoseIsRefused) {
   EXPECT_NE(o.err.find("out of range"), std::string::npos) << o.err;
 }
 
+// 50 km is a valid pose, but no volume spans it: refused from the poses alone, before the
+// frames are detected and mapped (30 frames with one of them 50 km away took 80 s).
+TEST_F(InputLimits, AFrameFarFromTheOthersIsRefusedBeforeFusing) {
+  const fs::path walk = dir() / "walk";
+  ASSERT_EQ(run_cli({"simulate", walk.string(), "--preset", "lab", "--frames", "30", "--quiet"}).exit_code, 0);
+  const fs::path index = walk / "dataset.json";
+  nlohmann::json j = nlohmann::json::parse(read_file(index));
+  j["frames"][15]["pose"][3] = 5e4;
+  write_file(index, j.dump());
+  const Outcome o = run_cli({"fuse", walk.string(), "--json", (dir() / "f.json").string()});
+  EXPECT_TRUE(exits_with_one_line(o, 3, walk.string()));
+  EXPECT_NE(o.err.find("fusion.max_extent_m"), std::string::npos) << o.err;
+  EXPECT_FALSE(fs::exists(dir() / "f.json"));
+}
+
 TEST_F(InputLimits, AHugeImageIsRefusedBeforeDecoding) {
   const fs::path png = dir() / "huge.png";
   ASSERT_TRUE(cv::imwrite(png.string(), cv::Mat::zeros(5000, 5000, CV_16UC1)));
