@@ -12,6 +12,7 @@ const char* render();               // tests: the built tunnelmap-render
 const char* sample_dir();           // tests: resources/sample
 const char* openni2_runtime_dir();  // tests: OpenNI2 with the simulated-camera driver
 const char* ui_test_dir();          // tests: tests/ui (reference images)
+const char* test_fixture_dir();     // tests: fixtures made once per build (tests/support/shared_fixture.h)
 }  // namespace tunnelmap::build_paths
 
 #define TUNNELMAP_SOURCE_DIR (::tunnelmap::build_paths::source_dir())

@@ -21,6 +21,7 @@
 #include "tests/support/cli_runner.h"
 #include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
+#include "tests/support/shared_fixture.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
@@ -35,26 +36,30 @@ Parameters test_params() {
   return p;
 }
 
-// Six VGA frames in three arm poses of the lab tunnel, written once for all tests here.
+// Six VGA frames in three arm poses of the lab tunnel, without and with sag, written once per
+// build and shared by every test here (they only read them).
 class SimSequence : public ::testing::Test {
  protected:
-  static std::unique_ptr<IoTempDir> dir;
+  static tunnelmap::testing::SharedFixture shared;
   static std::string exact, sag;
 
   static void SetUpTestSuite() {
-    dir = std::make_unique<IoTempDir>();
-    SimConfig c = SimConfig::from_preset("lab");
-    c.frames = 6;
-    c.arm_preset = "inchworm7";
-    exact = dir->file("exact");
-    write_sim_dataset(exact, c);
-    c.arm_sag_deg_per_m = 1.0;
-    sag = dir->file("sag");
-    write_sim_dataset(sag, c);
+    const std::string what = "lab, 6 frames, inchworm7, sag 0 and 1 deg/m\n" + tunnelmap::testing::test_binary_stamp();
+    shared = tunnelmap::testing::shared_fixture("SimSequence", what, [](const std::filesystem::path& dir) {
+      SimConfig c = SimConfig::from_preset("lab");
+      c.frames = 6;
+      c.arm_preset = "inchworm7";
+      write_sim_dataset((dir / "exact").string(), c);
+      c.arm_sag_deg_per_m = 1.0;
+      write_sim_dataset((dir / "sag").string(), c);
+      return std::string();
+    });
+    ASSERT_TRUE(shared.ok()) << shared.error;
+    exact = shared.file("exact");
+    sag = shared.file("sag");
   }
-  static void TearDownTestSuite() { dir.reset(); }
 };
-std::unique_ptr<IoTempDir> SimSequence::dir;
+tunnelmap::testing::SharedFixture SimSequence::shared;
 std::string SimSequence::exact, SimSequence::sag;
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "mesh/tsdf_mesher.h"
 #include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
+#include "tests/support/shared_fixture.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
@@ -42,32 +43,35 @@ std::size_t distinct_positions(const TriangleMesh& m) {
   return seen.size();
 }
 
-// A walk of the lab girder over 3 m (4 stops, exact poses), written once.
+// A walk of the lab girder over 3 m (4 stops, exact poses), written once per build and shared by
+// every test here: tests read it and write into their own folder.
 class SparseWalk : public ::testing::Test {
  protected:
-  static std::unique_ptr<IoTempDir> dir;
+  static tunnelmap::testing::SharedFixture shared;
   static std::unique_ptr<Dataset> walk;
 
   static void SetUpTestSuite() {
-    dir = std::make_unique<IoTempDir>();
-    SimConfig c = SimConfig::from_preset("lab");
-    c.frames = 8;
-    SimWalk w;
-    w.start_x_m = 0.0;
-    w.end_x_m = 3.0;
-    w.stops = 4;
-    c.walk = w;
-    write_sim_dataset(dir->file("walk"), c);
-    walk = std::make_unique<Dataset>(read_dataset(dir->file("walk")));
+    const std::string what = "lab, 8 frames, walk 0-3 m in 4 stops\n" + tunnelmap::testing::test_binary_stamp();
+    shared = tunnelmap::testing::shared_fixture("SparseWalk", what, [](const std::filesystem::path& dir) {
+      SimConfig c = SimConfig::from_preset("lab");
+      c.frames = 8;
+      SimWalk w;
+      w.start_x_m = 0.0;
+      w.end_x_m = 3.0;
+      w.stops = 4;
+      c.walk = w;
+      write_sim_dataset((dir / "walk").string(), c);
+      return std::string();
+    });
+    ASSERT_TRUE(shared.ok()) << shared.error;
+    walk = std::make_unique<Dataset>(read_dataset(shared.file("walk")));
   }
-  static void TearDownTestSuite() {
-    walk.reset();
-    dir.reset();
-  }
+  static void TearDownTestSuite() { walk.reset(); }
 
   static Eigen::Isometry3d pose(std::size_t i) { return *resolve_frame_pose(*walk, i).pose; }
+  IoTempDir tmp;  // this test's own outputs
 };
-std::unique_ptr<IoTempDir> SparseWalk::dir;
+tunnelmap::testing::SharedFixture SparseWalk::shared;
 std::unique_ptr<Dataset> SparseWalk::walk;
 
 }  // namespace
@@ -128,11 +132,11 @@ TEST_F(SparseWalk, MemoryIsTheSameWhenTheGirderLiesDiagonally) {
   turn.linear() = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   std::vector<Eigen::Isometry3d> turned;
   for (std::size_t i = 0; i < walk->frames.size(); ++i) turned.push_back(turn * pose(i));
-  write_dataset_with_poses(*walk, turned, dir->file("diagonal"));
+  write_dataset_with_poses(*walk, turned, tmp.file("diagonal"));
   FuseSettings s;
   s.refine_poses = false;  // exact poses: the two runs fuse the same frames at the same poses
   const FusionResult along = fuse_dataset(*walk, p, s);
-  const FusionResult diagonal = fuse_dataset(read_dataset(dir->file("diagonal")), p, s);
+  const FusionResult diagonal = fuse_dataset(read_dataset(tmp.file("diagonal")), p, s);
   // The lattice turned with the girder's heading (to a multiple of 90 deg from it).
   EXPECT_TRUE(along.volume->lattice_to_world().isIdentity(0.0));
   const Eigen::Vector3d lattice_x = diagonal.volume->lattice_to_world().col(0);

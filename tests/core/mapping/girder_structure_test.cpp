@@ -4,18 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
-#include "tests/support/io_temp_dir.h"
+#include "tests/support/shared_cli_fixture.h"
 
 namespace tunnelmap {
 namespace {
 
 using testing::CliRun;
-using testing::IoTempDir;
 using testing::run_cli;
 using testing::slurp;
 
@@ -23,32 +21,31 @@ const std::string kFieldPreset = std::string(TUNNELMAP_TEST_DATA_DIR) + "/preset
 
 // Field box girder (0.84 x 1.20 m), diaphragms at x = 3 and 6 m and the preset's manhole plate at
 // 5 m, each with the simulator's elliptic 0.45 x 0.70 m manhole, walked from x = 0.4 to 8.2 m along
-// the centre (through the manholes).
+// the centre (through the manholes). Simulated and mapped once per build and shared by every test
+// here (they only read it).
 class GirderWalk : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir = std::make_unique<IoTempDir>();
-    const CliRun sim = run_cli("simulate " + dir->file("walk") +
-                               " --preset field --frames 24 --seed 7 --quiet --diaphragms 3,6"
-                               " --walk 0.4,8.2,12 --walk-pose 0,0.5,0");
-    ASSERT_EQ(sim.exit_code, 0) << sim.err;
-    map = run_cli("map " + dir->file("walk") + " --params " + kFieldPreset + " --json " +
-                  dir->file("map.json") + " --diaphragms-csv " + dir->file("plates.csv") + " --ply " +
-                  dir->file("map.ply"));
+    shared = testing::shared_cli_fixture(
+        "GirderWalk", {{"simulate", "simulate {dir}/walk --preset field --frames 24 --seed 7 --quiet"
+                                    " --diaphragms 3,6 --walk 0.4,8.2,12 --walk-pose 0,0.5,0"},
+                       {"map", "map {dir}/walk --params " + kFieldPreset +
+                                   " --json {dir}/map.json --diaphragms-csv {dir}/plates.csv --ply {dir}/map.ply"}});
+    ASSERT_TRUE(shared.ok()) << shared.error;
+    map = testing::kept_cli_run(shared, "map");
     ASSERT_EQ(map.exit_code, 0) << map.err;
-    doc = nlohmann::json::parse(slurp(dir->file("map.json")));
-    dataset = nlohmann::json::parse(slurp(dir->file("walk/dataset.json")));
+    doc = nlohmann::json::parse(slurp(shared.file("map.json")));
+    dataset = nlohmann::json::parse(slurp(shared.file("walk/dataset.json")));
   }
-  static void TearDownTestSuite() { dir.reset(); }
   // World x of map station s (the walk runs along +X).
   static double world_x(double s) {
     return doc["frame"]["origin"][0].get<double>() + s * doc["frame"]["axis"][0].get<double>();
   }
-  static std::unique_ptr<IoTempDir> dir;
+  static testing::SharedFixture shared;
   static CliRun map;
   static nlohmann::json doc, dataset;
 };
-std::unique_ptr<IoTempDir> GirderWalk::dir;
+testing::SharedFixture GirderWalk::shared;
 CliRun GirderWalk::map;
 nlohmann::json GirderWalk::doc, GirderWalk::dataset;
 
@@ -114,13 +111,13 @@ TEST_F(GirderWalk, TheCentrelineRunsThroughTheCrossSectionsCentre) {
 }
 
 TEST_F(GirderWalk, TheDiaphragmCsvHasARowPerPlate) {
-  const std::string csv = slurp(dir->file("plates.csv"));
+  const std::string csv = slurp(shared.file("plates.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // header + 3 plates
   EXPECT_NE(csv.find("ellipse"), std::string::npos);
 }
 
 TEST_F(GirderWalk, ThePlyMapHoldsEachPlateWithItsOpening) {
-  const std::string ply = slurp(dir->file("map.ply"));
+  const std::string ply = slurp(shared.file("map.ply"));
   const std::string head = ply.substr(0, ply.find("end_header"));
   EXPECT_NE(head.find("comment plates 3\n"), std::string::npos) << head;
 }

@@ -20,6 +20,7 @@
 #include "mesh/tsdf_mesher.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
+#include "tests/support/shared_fixture.h"
 
 namespace tunnelmap {
 namespace {
@@ -242,21 +243,27 @@ TEST(PoseRefinement, APlateSeenByOneGroupOnlyDoesNotFixTheAxialPosition) {
 
 // --- Simulated arm sequences with sag, fused ----------------------------------------------
 
+// Arm sequences at 0, 1 and 2 deg/m of sag, simulated once per build and shared by every test
+// here: tests read `shared` and write into their own folder.
 class SagFusion : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir = std::make_unique<IoTempDir>();
-    for (double sag : {0.0, 1.0, 2.0}) {
-      SimConfig c = SimConfig::from_preset("lab");
-      c.frames = 12;
-      c.seed = 7;
-      c.arm_preset = "inchworm7";
-      c.arm_sag_deg_per_m = sag;
-      write_sim_dataset(dir->file("sag" + std::to_string(int(sag))), c);
-    }
+    const std::string what = "lab, 12 frames, seed 7, inchworm7, sag 0 1 2 deg/m\n" + testing::test_binary_stamp();
+    shared = testing::shared_fixture("SagFusion", what, [](const std::filesystem::path& dir) {
+      for (double sag : {0.0, 1.0, 2.0}) {
+        SimConfig c = SimConfig::from_preset("lab");
+        c.frames = 12;
+        c.seed = 7;
+        c.arm_preset = "inchworm7";
+        c.arm_sag_deg_per_m = sag;
+        write_sim_dataset((dir / ("sag" + std::to_string(int(sag)))).string(), c);
+      }
+      return std::string();
+    });
+    ASSERT_TRUE(shared.ok()) << shared.error;
   }
-  static void TearDownTestSuite() { dir.reset(); }
-  static std::unique_ptr<IoTempDir> dir;
+  static testing::SharedFixture shared;
+  IoTempDir tmp;  // this test's own outputs
 
   struct Fused {
     double aligned_within = 0.0;   // mesh vertices within 10 mm after one rigid alignment
@@ -265,7 +272,7 @@ class SagFusion : public ::testing::Test {
   };
 
   static Fused fuse(int sag, bool refine) {
-    const Dataset ds = read_dataset(dir->file("sag" + std::to_string(sag)));
+    const Dataset ds = read_dataset(shared.file("sag" + std::to_string(sag)));
     Parameters p;
     p.load_json_file(std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/lab.json");
     p.set("fusion.voxel_mm", 10.0);
@@ -305,7 +312,7 @@ class SagFusion : public ::testing::Test {
     return f;
   }
 };
-std::unique_ptr<IoTempDir> SagFusion::dir;
+testing::SharedFixture SagFusion::shared;
 
 TEST_F(SagFusion, RefinementKeepsTheMeshWithin10mmAt1And2DegPerMetre) {
   for (int sag : {1, 2}) {
@@ -349,10 +356,10 @@ TEST_F(SagFusion, WithoutSagRefinementChangesNothingThatMatters) {
 
 TEST_F(SagFusion, TheRefinedDatasetIsReadLikeAnyOther) {
   const Fused refined = fuse(2, true);
-  const Dataset ds = read_dataset(dir->file("sag2"));
+  const Dataset ds = read_dataset(shared.file("sag2"));
   std::vector<Eigen::Isometry3d> poses;
   for (const FusedFrame& f : refined.result.frames) poses.push_back(f.camera_to_world);
-  const std::string out = dir->file("refined2");
+  const std::string out = tmp.file("refined2");
   write_dataset_with_poses(ds, poses, out);
   const Dataset back = read_dataset(out);
   ASSERT_EQ(back.frames.size(), ds.frames.size());
@@ -366,8 +373,8 @@ TEST_F(SagFusion, TheRefinedDatasetIsReadLikeAnyOther) {
 }
 
 TEST_F(SagFusion, FuseCliReportsEachGroupsCorrectionAndWritesTheRefinedDataset) {
-  const std::string data = dir->file("sag2"), json = dir->file("fuse.json");
-  const std::string out = dir->file("cli_refined");
+  const std::string data = shared.file("sag2"), json = tmp.file("fuse.json");
+  const std::string out = tmp.file("cli_refined");
   const testing::CliRun run = testing::run_cli(
       "fuse " + data + " --set fusion.voxel_mm=20 --json " + json + " --refined-dataset " + out);
   ASSERT_EQ(run.exit_code, 0) << run.err;

@@ -17,6 +17,7 @@
 #include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/io_temp_dir.h"
+#include "tests/support/shared_cli_fixture.h"
 
 namespace tunnelmap {
 namespace {
@@ -88,31 +89,32 @@ std::vector<TrueSection> true_sections(const nlohmann::json& dataset) {
   return out;
 }
 
-// A walk over three sections, mapped once for the suite (simulation is the slow part).
+// A walk over three sections, simulated and mapped once per build (simulation is the slow part)
+// and shared by every test here: tests read `shared` and write into their own `tmp`.
 class SectionWalk : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir = std::make_unique<IoTempDir>();
-    const CliRun sim = run_cli("simulate " + dir->file("walk") +
-                               " --preset lab --frames 40 --seed 5 --quiet"
-                               " --sections 1.5:0.84x1.30,1.5:0.80x1.28,2:0.82x1.32"
-                               " --walk -1,3,10 --walk-pose 0,0.5,0");
-    ASSERT_EQ(sim.exit_code, 0) << sim.err;
-    map = run_cli("map " + dir->file("walk") + " --params " + kLabPreset +
-                  " --design 0.82x1.30 --tolerance-mm 10 --json " + dir->file("map.json") +
-                  " --csv " + dir->file("map.csv") + " --ply " + dir->file("map.ply"));
+    shared = testing::shared_cli_fixture(
+        "SectionWalk", {{"simulate", "simulate {dir}/walk --preset lab --frames 40 --seed 5 --quiet"
+                                     " --sections 1.5:0.84x1.30,1.5:0.80x1.28,2:0.82x1.32"
+                                     " --walk -1,3,10 --walk-pose 0,0.5,0"},
+                        {"map", "map {dir}/walk --params " + kLabPreset +
+                                    " --design 0.82x1.30 --tolerance-mm 10 --json {dir}/map.json"
+                                    " --csv {dir}/map.csv --ply {dir}/map.ply"}});
+    ASSERT_TRUE(shared.ok()) << shared.error;
+    map = testing::kept_cli_run(shared, "map");
   }
-  static void TearDownTestSuite() { dir.reset(); }
-  static std::unique_ptr<IoTempDir> dir;
+  static testing::SharedFixture shared;  // the simulated walk and the map's outputs
   static CliRun map;
+  IoTempDir tmp;  // this test's own outputs
 };
-std::unique_ptr<IoTempDir> SectionWalk::dir;
+testing::SharedFixture SectionWalk::shared;
 CliRun SectionWalk::map;
 
 TEST_F(SectionWalk, StationProfileIsWithin4mmAwayFromTheJointsAndJointsWithin20cm) {
   ASSERT_EQ(map.exit_code, 0) << map.err;
-  const nlohmann::json ds = read_json(dir->file("walk/dataset.json"));
-  const nlohmann::json m = read_json(dir->file("map.json"));
+  const nlohmann::json ds = read_json(shared.file("walk/dataset.json"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
   const std::vector<TrueSection> truth = true_sections(ds);
   ASSERT_EQ(truth.size(), 3u);
   const double ox = m["frame"]["origin"][0].get<double>(), ax = m["frame"]["axis"][0].get<double>();
@@ -157,12 +159,12 @@ TEST_F(SectionWalk, FarViewsCannotBiasASectionsSize) {
   // width and height there (near views first), so with every view (map.near_range_m = 0) as with
   // the near ones alone, every section is within 1.5 mm.
   for (const char* near : {"2.5", "0"}) {
-    const std::string json = dir->file(std::string("near_") + near + ".json");
-    const CliRun r = run_cli("map " + dir->file("walk") + " --params " + kLabPreset +
+    const std::string json = tmp.file(std::string("near_") + near + ".json");
+    const CliRun r = run_cli("map " + shared.file("walk") + " --params " + kLabPreset +
                              " --set map.near_range_m=" + near + " --json " + json + " -q");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json m = read_json(json);
-    const std::vector<TrueSection> truth = true_sections(read_json(dir->file("walk/dataset.json")));
+    const std::vector<TrueSection> truth = true_sections(read_json(shared.file("walk/dataset.json")));
     ASSERT_EQ(m["sections"].size(), truth.size());
     for (std::size_t i = 0; i < truth.size(); ++i) {
       EXPECT_NEAR(m["sections"][i]["height_m"].get<double>(), truth[i].height, 0.0015) << near << " " << i;
@@ -173,7 +175,7 @@ TEST_F(SectionWalk, FarViewsCannotBiasASectionsSize) {
 
 TEST_F(SectionWalk, DeviationsFromTheDesignMarkTheNarrowSectionOutOfTolerance) {
   ASSERT_EQ(map.exit_code, 0) << map.err;
-  const nlohmann::json m = read_json(dir->file("map.json"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
   EXPECT_NEAR(m["design"]["width_m"].get<double>(), 0.82, 1e-9);
   EXPECT_EQ(m["tolerance_mm"].get<double>(), 10.0);
   EXPECT_EQ(m["params"]["tunnel.design_width_m"].get<double>(), 0.82);
@@ -198,12 +200,12 @@ TEST_F(SectionWalk, DeviationsFromTheDesignMarkTheNarrowSectionOutOfTolerance) {
 
 TEST_F(SectionWalk, CsvHasOneRowPerStationAndPlyOneSweptBoxPerSection) {
   ASSERT_EQ(map.exit_code, 0) << map.err;
-  const nlohmann::json m = read_json(dir->file("map.json"));
-  const std::string csv = slurp(dir->file("map.csv"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
+  const std::string csv = slurp(shared.file("map.csv"));
   EXPECT_EQ(csv.rfind("station_m,width_m,height_m,width_source,height_source,frames,width_dev_mm,"
                       "height_dev_mm,out_of_tolerance\n", 0), 0u);
   EXPECT_EQ(testing::count_lines(csv), static_cast<int>(m["stations"].size()) + 1);
-  const std::string ply = slurp(dir->file("map.ply"));
+  const std::string ply = slurp(shared.file("map.ply"));
   EXPECT_NE(ply.find("comment sections 3\n"), std::string::npos);
   // Each section's comment carries its box's width and height, within 5 mm of the section's true
   // size (0.84 x 1.30, 0.80 x 1.28, 0.82 x 1.32 m).
@@ -220,14 +222,14 @@ TEST_F(SectionWalk, CsvHasOneRowPerStationAndPlyOneSweptBoxPerSection) {
 }
 
 TEST_F(SectionWalk, FuseMapFollowsTheSectionsToo) {
-  const CliRun fuse = run_cli("fuse " + dir->file("walk") + " --params " + kLabPreset +
-                              " --set fusion.voxel_mm=20 --map " + dir->file("fused_map.ply") +
-                              " --json " + dir->file("fuse.json"));
+  const CliRun fuse = run_cli("fuse " + shared.file("walk") + " --params " + kLabPreset +
+                              " --set fusion.voxel_mm=20 --map " + tmp.file("fused_map.ply") +
+                              " --json " + tmp.file("fuse.json"));
   ASSERT_EQ(fuse.exit_code, 0) << fuse.err;
-  const std::string ply = slurp(dir->file("fused_map.ply"));
+  const std::string ply = slurp(tmp.file("fused_map.ply"));
   EXPECT_NE(ply.find("comment sections 3\n"), std::string::npos);
-  const nlohmann::json j = read_json(dir->file("fuse.json"));
-  const nlohmann::json m = read_json(dir->file("map.json"));
+  const nlohmann::json j = read_json(tmp.file("fuse.json"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
   ASSERT_EQ(j["sections"].size(), 3u);
   for (int i = 0; i < 3; ++i) {  // the same map as `map`
     EXPECT_NEAR(j["sections"][i]["width_m"].get<double>(), m["sections"][i]["width_m"].get<double>(), 1e-6);
@@ -236,13 +238,13 @@ TEST_F(SectionWalk, FuseMapFollowsTheSectionsToo) {
 }
 
 TEST_F(SectionWalk, PosedDetectionTakesTheChangesOfSectionAndMeasuresEachPartOfAFrame) {
-  const CliRun det = run_cli("detect " + dir->file("walk") + " --params " + kLabPreset +
-                             " --json " + dir->file("detect.json"));
+  const CliRun det = run_cli("detect " + shared.file("walk") + " --params " + kLabPreset +
+                             " --json " + tmp.file("detect.json"));
   ASSERT_EQ(det.exit_code, 0) << det.err;
-  const nlohmann::json d = read_json(dir->file("detect.json"));
-  const nlohmann::json ds = read_json(dir->file("walk/dataset.json"));
+  const nlohmann::json d = read_json(tmp.file("detect.json"));
+  const nlohmann::json ds = read_json(shared.file("walk/dataset.json"));
   const std::vector<TrueSection> truth = true_sections(ds);
-  const nlohmann::json m = read_json(dir->file("map.json"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
   const double ox = m["frame"]["origin"][0].get<double>();
   int two_part_frames = 0;
   for (const auto& f : d["frames"]) {
@@ -269,7 +271,7 @@ TEST_F(SectionWalk, AnIsolatedOutlierFrameIsStillRejected) {
   // Frame 20's depth scaled by 8 %: its walls move 30-35 mm outwards, where several frames
   // before it measured the tunnel.
   IoTempDir copy;
-  std::filesystem::copy(dir->file("walk"), copy.file("walk"), std::filesystem::copy_options::recursive);
+  std::filesystem::copy(shared.file("walk"), copy.file("walk"), std::filesystem::copy_options::recursive);
   const std::string png = copy.file("walk/depth/000020.png");
   cv::Mat depth = cv::imread(png, cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth.type(), CV_16UC1);
@@ -292,15 +294,15 @@ TEST_F(SectionWalk, AnIsolatedOutlierFrameIsStillRejected) {
 
 TEST_F(SectionWalk, ReportPdfHoldsTheSectionsAndTheOutOfToleranceStations) {
   ASSERT_EQ(map.exit_code, 0) << map.err;
-  const CliRun report = run_cli("map " + dir->file("walk") + " --params " + kLabPreset +
-                                " --design 0.82x1.30 --quiet --report " + dir->file("report.pdf"));
+  const CliRun report = run_cli("map " + shared.file("walk") + " --params " + kLabPreset +
+                                " --design 0.82x1.30 --quiet --report " + tmp.file("report.pdf"));
   if (report.exit_code == 2 && report.err.find("needs the Qt build") != std::string::npos)
     GTEST_SKIP() << "tunnelmap-cli was built without Qt: " << report.err;
   ASSERT_EQ(report.exit_code, 0) << report.err;
-  const std::string txt = dir->file("report.txt");
-  ASSERT_EQ(std::system(("pdftotext -layout " + dir->file("report.pdf") + " " + txt).c_str()), 0);
+  const std::string txt = tmp.file("report.txt");
+  ASSERT_EQ(std::system(("pdftotext -layout " + tmp.file("report.pdf") + " " + txt).c_str()), 0);
   const std::string text = slurp(txt);
-  const nlohmann::json m = read_json(dir->file("map.json"));
+  const nlohmann::json m = read_json(shared.file("map.json"));
   for (const char* heading : {"Tunnel inspection report", "Sections", "Stations out of tolerance",
                               "Width against station", "Height against station", "Map"})
     EXPECT_NE(text.find(heading), std::string::npos) << heading;
@@ -320,26 +322,31 @@ TEST_F(SectionWalk, ReportPdfHoldsTheSectionsAndTheOutOfToleranceStations) {
       break;
     }
   // A page renders to an image.
-  ASSERT_EQ(std::system(("pdftoppm -r 30 -png -f 1 -l 1 " + dir->file("report.pdf") + " " +
-                         dir->file("page")).c_str()), 0);
-  EXPECT_TRUE(std::filesystem::exists(dir->file("page-1.png")) ||
-              std::filesystem::exists(dir->file("page-01.png")));
+  ASSERT_EQ(std::system(("pdftoppm -r 30 -png -f 1 -l 1 " + tmp.file("report.pdf") + " " +
+                         tmp.file("page")).c_str()), 0);
+  EXPECT_TRUE(std::filesystem::exists(tmp.file("page-1.png")) ||
+              std::filesystem::exists(tmp.file("page-01.png")));
 }
 
 // Camera under the roof, pitched 3 deg down, walking to 1.8 m from a diaphragm: about 2.3 m
 // from it the plate hides the floor (at 1.8 m the floor shows again through the manhole), and
-// those frames take their height from the earlier frames' map. Simulates the walk into `dir`,
-// detects it with the lab preset and `options` into d.json, expects every frame within 12 mm,
-// and returns the frames whose height came from context.
-int approach_within_12mm(const IoTempDir& dir, const std::string& options, CliRun& det) {
-  const CliRun sim = run_cli("simulate " + dir.file("appr") +
-                             " --preset lab --frames 24 --quiet --diaphragms 5"
-                             " --walk 0,3.2,8 --walk-pose 0,0.9,-3");
-  EXPECT_EQ(sim.exit_code, 0) << sim.err;
-  det = run_cli("detect " + dir.file("appr") + " --params " + kLabPreset + options + " --json " +
+// those frames take their height from the earlier frames' map. Simulated once per build and
+// shared by both tests that detect it.
+testing::SharedFixture approach_walk() {
+  return testing::shared_cli_fixture("StationMapApproach", {{"simulate", "simulate {dir}/appr --preset lab --frames 24"
+                                                                         " --quiet --diaphragms 5 --walk 0,3.2,8"
+                                                                         " --walk-pose 0,0.9,-3"}});
+}
+
+// Detects the approach walk with the lab preset and `options` into dir/d.json, expects every
+// frame within 12 mm, and returns the frames whose height came from context.
+int approach_within_12mm(const testing::SharedFixture& walk, const IoTempDir& dir, const std::string& options,
+                         CliRun& det) {
+  EXPECT_TRUE(walk.ok()) << walk.error;
+  det = run_cli("detect " + walk.file("appr") + " --params " + kLabPreset + options + " --json " +
                 dir.file("d.json"));
   EXPECT_EQ(det.exit_code, 0) << det.err;
-  if (sim.exit_code != 0 || det.exit_code != 0) return 0;
+  if (!walk.ok() || det.exit_code != 0) return 0;
   const nlohmann::json d = read_json(dir.file("d.json"));
   int from_context = 0;
   for (const auto& f : d["frames"]) {
@@ -363,13 +370,14 @@ TEST(StationMapApproach, FramesApproachingAPlateKeepBothDimensionsWithin12mm) {
   // disparity-space fit, they weigh in the template by their points, and those seen through the
   // manhole measure no zone (with least squares, the plain mean and no such rule, 11 of 24
   // frames came out 15-129 mm low).
+  const testing::SharedFixture walk = approach_walk();
   IoTempDir dir;
   CliRun det;
-  EXPECT_GE(approach_within_12mm(dir, "", det), 3) << "the floor must leave the view near the plate";
+  EXPECT_GE(approach_within_12mm(walk, dir, "", det), 3) << "the floor must leave the view near the plate";
   EXPECT_NE(det.out.find("partial: height from context"), std::string::npos) << det.out;
 
   // The same last frame alone (a depth PNG, no pose): partial, with the width measured.
-  const CliRun one = run_cli("detect " + dir.file("appr/depth/000023.png") + " --params " +
+  const CliRun one = run_cli("detect " + walk.file("appr/depth/000023.png") + " --params " +
                              kLabPreset + " --json " + dir.file("one.json"));
   ASSERT_EQ(one.exit_code, 0) << one.err;
   const nlohmann::json f = read_json(dir.file("one.json"))["frames"][0];
@@ -386,7 +394,7 @@ TEST(StationMapApproach, ThePixelGridKeepsBothDimensionsWithin12mm) {
   // slivers at 2.5-3.5 m.
   IoTempDir dir;
   CliRun det;
-  EXPECT_GE(approach_within_12mm(dir, " --set grow.cell_px=0", det), 3);
+  EXPECT_GE(approach_within_12mm(approach_walk(), dir, " --set grow.cell_px=0", det), 3);
 }
 
 TEST(StationMapApproach, SingleFramesAt1_8mWithoutPosesArePartialWithTheWidthMeasured) {
