@@ -46,8 +46,9 @@ std::vector<Eigen::Vector3i> occupied_chunks(const SparseTsdfVolume& volume);
 std::vector<Eigen::Vector3i> chunks_affected_by(const std::vector<Eigen::Vector3i>& blocks);
 
 MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& chunk, int min_weight);
-// The chunks' meshes as one, vertices shared between chunks merged by lattice edge.
-TriangleMesh merge_chunks(const ChunkMap& chunks);
+// The chunks' meshes as one, vertices shared between chunks merged by lattice edge (pass the
+// chunks with std::move where they are not needed after: each is freed once merged).
+TriangleMesh merge_chunks(ChunkMap chunks);
 
 // Keeps each chunk's mesh between updates: after more frames, only the chunks that their
 // blocks affect are extracted again.
