@@ -153,11 +153,15 @@ MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& c
 namespace {
 
 // Only a vertex on a chunk's boundary plane can belong to two chunks (a chunk owns the cells
-// whose lower voxel lies in it). The edge's own axis counts too: a vertex exactly on a voxel
-// (a surface through voxel centres) is keyed by whichever edge flying edges put it on.
+// whose lower voxel lies in it), so only edges that touch such a plane at either end are
+// looked up: a vertex on or next to a voxel is keyed by whichever edge each chunk's flying
+// edges put it on, and rounding may give it the edge that ends on the plane.
 bool on_chunk_seam(const LatticeEdge& e) {
-  return e.voxel.x() % kChunkVoxels == 0 || e.voxel.y() % kChunkVoxels == 0 ||
-         e.voxel.z() % kChunkVoxels == 0;
+  Eigen::Vector3i far_end = e.voxel;
+  ++far_end[e.axis];
+  for (int k = 0; k < 3; ++k)
+    if (e.voxel[k] % kChunkVoxels == 0 || far_end[k] % kChunkVoxels == 0) return true;
+  return false;
 }
 
 void reserve_for(const ChunkMap& chunks, TriangleMesh& mesh) {
