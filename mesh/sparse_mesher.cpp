@@ -77,6 +77,7 @@ LatticeEdge edge_of(const double* q, const Eigen::Vector3i& first_sample) {
   }
   LatticeEdge e;
   e.axis = axis;
+  e.on_voxel = best < 1e-6;
   for (int k = 0; k < 3; ++k)
     e.voxel[k] = first_sample[k] + int(k == axis ? std::floor(q[k]) : std::round(q[k]));
   return e;
@@ -157,6 +158,7 @@ namespace {
 // looked up: a vertex on or next to a voxel is keyed by whichever edge each chunk's flying
 // edges put it on, and rounding may give it the edge that ends on the plane.
 bool on_chunk_seam(const LatticeEdge& e) {
+  if (e.on_voxel) return true;  // also merges the copies one chunk may hold
   Eigen::Vector3i far_end = e.voxel;
   ++far_end[e.axis];
   for (int k = 0; k < 3; ++k)
