@@ -21,8 +21,9 @@ inline constexpr int kChunkBlocks = 4;
 struct LatticeEdge {
   Eigen::Vector3i voxel = Eigen::Vector3i::Zero();
   int axis = 0;
-  // The vertex sits on the voxel itself (a TSDF exactly 0 there): flying edges may then emit it
-  // once per edge meeting there, all keyed alike. Not part of the key.
+  // The vertex sits on the voxel itself, within a thousandth of a voxel (a TSDF of 0 there):
+  // flying edges may then emit it once per edge meeting there, all keyed alike. Not part of
+  // the key.
   bool on_voxel = false;
   bool operator==(const LatticeEdge& o) const { return axis == o.axis && voxel == o.voxel; }
 };
