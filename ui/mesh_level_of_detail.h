@@ -15,7 +15,7 @@ namespace tunnelmap::ui {
 constexpr long long kLevelOfDetailMinTriangles = 1000000;  // smaller meshes are shown whole
 constexpr double kLevelOfDetailPieceM = 0.5;       // piece length along the mesh's long axis
 constexpr double kLevelOfDetailBinM = 0.12;        // decimation bin edge (far pieces)
-constexpr long long kLevelOfDetailNearTriangles = 200000;  // full-resolution budget per view
+constexpr long long kLevelOfDetailNearTriangles = 150000;  // full-resolution budget per view
 constexpr double kLevelOfDetailLookAheadM = 1.2;  // full resolution first where the camera looks
 
 struct MeshLevelOfDetail {
