@@ -13,10 +13,16 @@
 
 namespace tunnelmap {
 
+// floor(x) as an int, without a call to floorf (the baseline x86-64 target has no rounding
+// instruction): the same value for every x within int range.
+inline int floor_to_int(float x) {
+  const int i = static_cast<int>(x);  // towards zero
+  return x < static_cast<float>(i) ? i - 1 : i;
+}
+
 // Block index of a world point, for a given block edge.
 inline Eigen::Vector3i block_of(const Eigen::Vector3f& p, float block_m) {
-  return {static_cast<int>(std::floor(p.x() / block_m)), static_cast<int>(std::floor(p.y() / block_m)),
-          static_cast<int>(std::floor(p.z() / block_m))};
+  return {floor_to_int(p.x() / block_m), floor_to_int(p.y() / block_m), floor_to_int(p.z() / block_m)};
 }
 
 // Calls `visit(block)` for the blocks of the frame's band; a block may come more than once
