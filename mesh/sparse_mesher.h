@@ -21,6 +21,10 @@ inline constexpr int kChunkBlocks = 4;
 struct LatticeEdge {
   Eigen::Vector3i voxel = Eigen::Vector3i::Zero();
   int axis = 0;
+  // The vertex sits on the voxel itself, within a thousandth of a voxel (a TSDF of 0 there):
+  // flying edges may then emit it once per edge meeting there, all keyed alike. Not part of
+  // the key.
+  bool on_voxel = false;
   bool operator==(const LatticeEdge& o) const { return axis == o.axis && voxel == o.voxel; }
 };
 
@@ -46,8 +50,9 @@ std::vector<Eigen::Vector3i> occupied_chunks(const SparseTsdfVolume& volume);
 std::vector<Eigen::Vector3i> chunks_affected_by(const std::vector<Eigen::Vector3i>& blocks);
 
 MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& chunk, int min_weight);
-// The chunks' meshes as one, vertices shared between chunks merged by lattice edge.
-TriangleMesh merge_chunks(const ChunkMap& chunks);
+// The chunks' meshes as one, vertices shared between chunks merged by lattice edge (pass the
+// chunks with std::move where they are not needed after: each is freed once merged).
+TriangleMesh merge_chunks(ChunkMap chunks);
 
 // Keeps each chunk's mesh between updates: after more frames, only the chunks that their
 // blocks affect are extracted again.

@@ -12,6 +12,7 @@
 #include "core/fusion/fusion_options.h"
 #include "core/tunnel/tunnel_options.h"
 #include "mesh/tsdf_mesher.h"
+#include "ui/mesh_level_of_detail.h"
 #include "ui/scene/frustum_polydata.h"
 #include "ui/scene/tunnel_polydata.h"
 
@@ -107,7 +108,7 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
   auto& g = out.geometry;
   g.cloud = vtkSmartPointer<vtkPolyData>::New();  // no single frame's cloud in the world view
   g.planes = vtkSmartPointer<vtkPolyData>::New();
-  g.mesh = scene::mesh_polydata(mesh);
+  g.mesh = with_level_of_detail(scene::mesh_polydata(mesh));  // a long girder: pieces and overview
   set_pose_layers(g, r.merged, dataset.intrinsics, fused_poses);
   out.given_geometry = g;
   if (out.refined) {

@@ -4,6 +4,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 
+#include "ui/mesh_level_of_detail.h"
 #include "ui/scene/mesh_polydata.h"
 
 namespace tunnelmap::ui {
@@ -19,10 +20,12 @@ vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& m) {
       for (int k = 0; k < 3; ++k) normals->SetTypedComponent(static_cast<vtkIdType>(i), k, m.normals[i][k]);
     poly->GetPointData()->SetNormals(normals);
   }
-  return poly;
+  return with_level_of_detail(poly);
 }
 
 vtkSmartPointer<vtkPolyData> mesh_in_camera_frame(vtkPolyData* world_mesh, const Eigen::Isometry3d& world_to_camera) {
+  if (const MeshLevelOfDetail* lod = level_of_detail(world_mesh))
+    return near_full_far_coarse(*lod, world_to_camera);
   auto moved = vtkSmartPointer<vtkPolyData>::New();
   moved->ShallowCopy(world_mesh);
   auto points = vtkSmartPointer<vtkPoints>::New();

@@ -10,11 +10,13 @@
 namespace tunnelmap::ui {
 
 // Points, triangles and vertex colours through scene::mesh_polydata (the converter the fused
-// scene uses for its TSDF mesh), plus the file's normals when it has them.
+// scene uses for its TSDF mesh), plus the file's normals when it has them. A long mesh comes
+// back as its decimated overview carrying its pieces (ui/mesh_level_of_detail.h).
 vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& mesh);
 
 // `world_mesh` with every point mapped by `world_to_camera`; normals dropped (world-frame
-// normals would light it wrongly). Shares the cells and colours of `world_mesh`.
+// normals would light it wrongly). Shares the cells and colours of `world_mesh`. A long mesh's
+// pieces near the camera at full resolution and the others decimated.
 vtkSmartPointer<vtkPolyData> mesh_in_camera_frame(vtkPolyData* world_mesh, const Eigen::Isometry3d& world_to_camera);
 
 }  // namespace tunnelmap::ui

@@ -9,7 +9,7 @@
 namespace tunnelmap {
 
 MeshAccuracy mesh_accuracy(const TriangleMesh& mesh, const std::vector<PlaneRef>& planes,
-                           double tolerance_m) {
+                           double tolerance_m, const Eigen::Isometry3d& mesh_to_planes) {
   MeshAccuracy a;
   a.vertices = mesh.vertices.size();
   if (a.vertices == 0 || planes.empty()) return a;
@@ -17,10 +17,10 @@ MeshAccuracy mesh_accuracy(const TriangleMesh& mesh, const std::vector<PlaneRef>
   d.reserve(a.vertices);
   std::size_t in = 0;
   double sq = 0.0;
-  for (const Eigen::Vector3f& v : mesh.vertices) {
+  for (const Eigen::Vector3f& vertex : mesh.vertices) {
+    const Eigen::Vector3d v = mesh_to_planes * vertex.cast<double>();
     double best = std::numeric_limits<double>::infinity();
-    for (const PlaneRef& p : planes)
-      best = std::min(best, std::abs(p.normal.dot(v.cast<double>()) + p.offset));
+    for (const PlaneRef& p : planes) best = std::min(best, std::abs(p.normal.dot(v) + p.offset));
     d.push_back(best);
     sq += best * best;
     if (best <= tolerance_m) ++in;

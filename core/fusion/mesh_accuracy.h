@@ -22,8 +22,10 @@ struct MeshAccuracy {
   double median_m = 0.0, p95_m = 0.0, rms_m = 0.0;
 };
 
+// `mesh_to_planes` moves the vertices first (without copying a mesh of millions of vertices).
 MeshAccuracy mesh_accuracy(const TriangleMesh& mesh, const std::vector<PlaneRef>& planes,
-                           double tolerance_m = 0.010);
+                           double tolerance_m = 0.010,
+                           const Eigen::Isometry3d& mesh_to_planes = Eigen::Isometry3d::Identity());
 
 // The rigid motion that best lays the mesh onto the planes (point-to-plane ICP, each vertex
 // against its nearest plane within `max_distance_m`): what a fused map is worth up to where the

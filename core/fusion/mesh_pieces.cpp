@@ -28,22 +28,52 @@ void copy_triangle(const TriangleMesh& from, const std::array<std::int32_t, 3>& 
 
 }  // namespace
 
+namespace {
+
+// Each triangle's piece: the number of cuts below its centroid's station.
+std::vector<std::uint32_t> piece_of_triangles(const TriangleMesh& mesh, const StationAxis& axis,
+                                              const std::vector<double>& cuts) {
+  std::vector<std::uint32_t> piece_of(mesh.triangles.size());
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    const Eigen::Vector3f c = (mesh.vertices[std::size_t(t[0])] + mesh.vertices[std::size_t(t[1])] +
+                               mesh.vertices[std::size_t(t[2])]) / 3.0f;
+    piece_of[i] =
+        static_cast<std::uint32_t>(std::upper_bound(cuts.begin(), cuts.end(), axis.station(c)) - cuts.begin());
+  }
+  return piece_of;
+}
+
+// The triangles grouped by piece, in mesh order within each (a counting sort): piece p's are
+// by_piece[first[p]] .. by_piece[first[p + 1] - 1].
+void group_by_piece(const std::vector<std::uint32_t>& piece_of, std::size_t pieces, std::vector<std::size_t>& first,
+                    std::vector<std::uint32_t>& by_piece) {
+  first.assign(pieces + 1, 0);
+  for (std::uint32_t p : piece_of) ++first[p + 1];
+  for (std::size_t p = 1; p < first.size(); ++p) first[p] += first[p - 1];
+  by_piece.resize(piece_of.size());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  for (std::size_t i = 0; i < piece_of.size(); ++i) by_piece[next[piece_of[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+}  // namespace
+
 std::vector<MeshPiece> split_mesh(const TriangleMesh& mesh, const StationAxis& axis, std::vector<double> cuts) {
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  std::vector<MeshPiece> pieces(cuts.size() + 1);
-  std::vector<std::vector<std::int32_t>> remaps(pieces.size());
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3f c = (mesh.vertices[std::size_t(t[0])] + mesh.vertices[std::size_t(t[1])] +
-                               mesh.vertices[std::size_t(t[2])]) / 3.0f;
-    const std::size_t p =
-        static_cast<std::size_t>(std::upper_bound(cuts.begin(), cuts.end(), axis.station(c)) - cuts.begin());
-    if (remaps[p].empty()) remaps[p].assign(mesh.vertices.size(), -1);
-    copy_triangle(mesh, t, remaps[p], pieces[p].mesh);
-  }
+  // The pieces one after the other through one vertex map (a map per piece would hold 4 bytes
+  // per vertex of the whole mesh for every piece: 700 MB for a 100 m girder in 25 pieces).
+  std::vector<std::size_t> first;
+  std::vector<std::uint32_t> by_piece;
+  group_by_piece(piece_of_triangles(mesh, axis, cuts), cuts.size() + 1, first, by_piece);
+  std::vector<std::int32_t> remap(mesh.vertices.size(), -1);
   std::vector<MeshPiece> out;
-  for (MeshPiece& piece : pieces) {
-    if (piece.mesh.triangles.empty()) continue;
+  for (std::size_t p = 0; p + 1 < first.size(); ++p) {
+    if (first[p] == first[p + 1]) continue;
+    MeshPiece piece;
+    for (std::size_t k = first[p]; k < first[p + 1]; ++k) copy_triangle(mesh, mesh.triangles[by_piece[k]], remap, piece.mesh);
+    for (std::size_t k = first[p]; k < first[p + 1]; ++k)  // back to "not yet" for the next piece
+      for (std::int32_t v : mesh.triangles[by_piece[k]]) remap[std::size_t(v)] = -1;
     piece.from_m = std::numeric_limits<double>::infinity();
     piece.to_m = -piece.from_m;
     for (const Eigen::Vector3f& v : piece.mesh.vertices) {

@@ -34,7 +34,7 @@ std::size_t SparseTsdfVolume::memory_bytes() const {
   // A node of the index holds the key, the value and the next pointer (and its cached hash).
   constexpr std::size_t kNodeBytes = sizeof(void*) + sizeof(Eigen::Vector3i) + sizeof(std::int32_t) +
                                      sizeof(std::size_t);
-  return blocks_.size() * (sizeof(VoxelBlock) + sizeof(void*)) + index_.size() * kNodeBytes +
+  return blocks_.size() * (sizeof(VoxelBlock) + sizeof(void*) + sizeof(Eigen::Vector3i)) + index_.size() * kNodeBytes +
          index_.bucket_count() * sizeof(void*);
 }
 
@@ -75,6 +75,7 @@ VoxelBlock& SparseTsdfVolume::block_at(const Eigen::Vector3i& coords) {
   b->rgb.fill(0);
   b->color_weight.fill(0);
   blocks_.push_back(std::move(b));
+  block_coords_.push_back(coords);
   return *blocks_.back();
 }
 
@@ -96,16 +97,16 @@ void SparseTsdfVolume::allocate_band(const DepthFrame& frame, const Eigen::Isome
 void SparseTsdfVolume::add_visible_blocks(const FrameProjection& fp, const Eigen::Isometry3d& lattice_to_cam) {
   const double half = 0.5 * block_m();
   const double radius = half * std::sqrt(3.0);
-  for (const auto& block : blocks_) {
-    VoxelBlock& b = *block;
-    if (b.touched_frame == frames_) continue;
-    const Eigen::Vector3d c = lattice_to_cam * ((b.coords.cast<double>().array() + 0.5).matrix() * block_m() -
+  for (std::size_t i = 0; i < block_coords_.size(); ++i) {
+    const Eigen::Vector3d c = lattice_to_cam * ((block_coords_[i].cast<double>().array() + 0.5).matrix() * block_m() -
                                                 Eigen::Vector3d::Constant(0.5 * voxel_m_));
     if (c.z() + radius < fp.dmin || c.z() - radius > fp.dmax) continue;
     const double z = std::max(c.z() - radius, double(fp.dmin));
     const double u = fp.fx * c.x() / z + fp.cx, v = fp.fy * c.y() / z + fp.cy;
     const double mu = fp.fx * radius / z, mv = fp.fy * radius / z;
     if (u < -mu || v < -mv || u > fp.width + mu || v > fp.height + mv) continue;
+    VoxelBlock& b = *blocks_[i];
+    if (b.touched_frame == frames_) continue;
     b.touched_frame = frames_;
     touched_.push_back(&b);
   }
