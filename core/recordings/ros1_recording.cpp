@@ -52,6 +52,9 @@ class Ros1Recording : public Recording {
     auto emit = [&](std::uint32_t conn, std::int64_t t, const std::uint8_t* d, std::size_t n) {
       const auto it = connections_.find(conn);
       if (it == connections_.end()) throw TruncatedData("message on an undeclared connection");
+      // A connection declared only inside a chunk, not in the index the summary lists.
+      if (!summary_.topic(it->second.topic))
+        throw TruncatedData("message on topic '" + it->second.topic + "', which the bag's index does not list");
       if (!topics.empty() && !topics.count(it->second.topic)) return true;
       return visit(MessageView{it->second.topic, t, d, n});
     };
