@@ -19,6 +19,7 @@
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
 #include "core/kinematics/robot_json.h"
+#include "core/report/pose_refinement_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
 #include "core/util/error.h"
@@ -291,10 +292,7 @@ void run(const FuseOptions& o, CliContext& ctx) {
           {"height_spread_m", r.merged.height_spread_m}}},
         {"poses", poses},
         {"sections", sections},
-        {"pose_refinement",
-         {{"ran", r.refinement.ran},
-          {"iterations", r.refinement.iterations},
-          {"ms", r.refinement.ms}}},
+        {"pose_refinement", pose_refinement_json(r.refinement)},
         {"ground_truth_accuracy",
          truth.empty() ? nlohmann::json(nullptr)
                        : nlohmann::json{{"fraction_within_10mm", acc.fraction_within},

@@ -23,6 +23,7 @@
 #include "core/mapping/dataset_mapping.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/report/girder_json.h"
+#include "core/report/pose_refinement_json.h"
 #include "core/report/results_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
@@ -77,7 +78,7 @@ Parameters map_parameters(const MapOptions& o) {
 
 // Per pose group, the correction of its pose against the map (null when not refined).
 void add_refinement(nlohmann::json& doc, const PoseRefinement& r) {
-  doc["pose_refinement"] = {{"ran", r.ran}, {"iterations", r.iterations}, {"ms", r.ms}};
+  doc["pose_refinement"] = pose_refinement_json(r);
   for (nlohmann::json& p : doc["poses"]) {
     p["refinement"] = nullptr;
     if (!r.ran) continue;
@@ -110,7 +111,10 @@ void print_summary(const StationMap& m, const PoseRefinement& refinement, double
     if (p.rescan)
       std::printf("pose %d (frames %d-%d): %s\n", p.group, p.frames.front(), p.frames.back(),
                   p.message.c_str());
-  if (refinement.ran) {
+  if (refinement.ran && refinement.given_poses_kept) {
+    std::printf("poses kept as given: the structure agrees with them within its noise (chi-square gain %.1f, "
+                "threshold %.1f)\n", refinement.evidence.chi2_gain, refinement.evidence.threshold);
+  } else if (refinement.ran) {
     double deg = 0.0, mm = 0.0;
     for (const PoseCorrection& c : refinement.groups)
       deg = std::max(deg, c.rotation_deg), mm = std::max(mm, c.translation_mm);

@@ -68,6 +68,7 @@ nlohmann::json girder_json(const GirderResult& r) {
             {"unmeasured", s.manholes_unmeasured}}},
           {"correction_mm", distribution(s.correction_mm)},
           {"correction_deg", distribution(s.correction_deg)},
+          {"poses_kept_as_given", s.poses_kept ? nlohmann::json(*s.poses_kept) : nlohmann::json(nullptr)},
           {"pose_error_mm", distribution(s.pose_error_mm)},
           {"pose_error_deg", distribution(s.pose_error_deg)},
           {"ms_per_frame", std::round(s.ms_per_frame * 100) / 100}};
@@ -77,7 +78,7 @@ nlohmann::json girder_json(const GirderResult& r) {
 nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
   std::vector<double> w, h, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, ms;
   int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, plates = 0, matched = 0,
-      missed = 0, invented = 0, unmeasured = 0;
+      missed = 0, invented = 0, unmeasured = 0, kept = 0, refined = 0;
   for (const GirderResult& r : results) {
     if (r.draw.drifted != drifted) continue;
     const GirderScore& s = r.score;
@@ -87,6 +88,7 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
     append(corr_mm, s.correction_mm), append(corr_deg, s.correction_deg);
     append(pose_mm, s.pose_error_mm), append(pose_deg, s.pose_error_deg);
     ms.push_back(s.ms_per_frame);
+    if (s.poses_kept) ++refined, kept += *s.poses_kept ? 1 : 0;
     if (r.draw.constant_section) ++constant, phantom += s.phantom_sections > 0 ? 1 : 0;
     joints += s.joints_true, joints_found += s.joints_found;
     plates += s.plates_true, matched += s.plates_matched, missed += s.plates_missed;
@@ -105,6 +107,7 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
           {"manholes_unmeasured", unmeasured},
           {"correction_mm", distribution(corr_mm)},
           {"correction_deg", distribution(corr_deg)},
+          {"poses_kept_as_given", {{"girders", kept}, {"of_refined", refined}}},
           {"pose_error_mm", distribution(pose_mm)},
           {"pose_error_deg", distribution(pose_deg)},
           {"ms_per_frame", distribution(ms)}};
@@ -199,6 +202,11 @@ std::string girders_markdown(const nlohmann::json& report) {
       std::to_string(d["manholes_unmeasured"].get<int>()));
   row("pose correction (mm)", cell(e["correction_mm"]), cell(d["correction_mm"]));
   row("pose correction (deg)", cell(e["correction_deg"]), cell(d["correction_deg"]));
+  const auto kept = [](const nlohmann::json& f) {
+    const nlohmann::json& k = f["poses_kept_as_given"];
+    return std::to_string(k["girders"].get<int>()) + " of " + std::to_string(k["of_refined"].get<int>());
+  };
+  row("girders whose poses the evidence test kept", kept(e), kept(d));
   row("pose error after alignment (mm)", cell(e["pose_error_mm"]), cell(d["pose_error_mm"]));
   row("pose error after alignment (deg)", cell(e["pose_error_deg"]), cell(d["pose_error_deg"]));
   row("detection + map (ms per frame)", cell(e["ms_per_frame"]), cell(d["ms_per_frame"]));

@@ -111,6 +111,7 @@ void score_plates(const StationMap& m, const TruthLine& line, std::vector<TruthP
 }
 
 void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, GirderScore& g) {
+  if (dm.mapped.refinement.ran) g.poses_kept = dm.mapped.refinement.given_poses_kept;
   for (const PoseCorrection& c : dm.mapped.refinement.groups) {
     g.correction_mm.push_back(c.translation_mm);
     g.correction_deg.push_back(c.rotation_deg);

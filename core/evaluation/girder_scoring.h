@@ -3,6 +3,7 @@
 // frame's "pose_true"): station errors, phantom and found sections, plates placed, missed and
 // invented, manhole sizes, pose corrections and the poses' remaining error.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <vector>
 
 #include "core/mapping/dataset_mapping.h"
@@ -19,6 +20,7 @@ struct GirderScore {
   std::vector<double> manhole_width_error_mm, manhole_height_error_mm;
   int manholes_unmeasured = 0;       // matched plates with an opening whose manhole is null
   std::vector<double> correction_mm, correction_deg;    // per pose group
+  std::optional<bool> poses_kept;    // the evidence test kept the given poses (unset: not refined)
   std::vector<double> pose_error_mm, pose_error_deg;    // per frame, after one rigid alignment
   double ms_per_frame = 0.0;
 };

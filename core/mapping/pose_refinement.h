@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/solvers/correction_evidence.h"
+
 namespace tunnelmap {
 
 // The six directions of a correction, in the tunnel frame: rotations about the axis, the
@@ -29,6 +31,10 @@ struct PoseRefinement {
   std::vector<PoseCorrection> groups;
   std::vector<Eigen::Isometry3d> poses;  // per frame, refined
   int iterations = 0;
+  // Whether the structure's disagreement with the given poses is beyond its noise; when it is
+  // not, the given poses are kept and every correction is zero.
+  CorrectionEvidence evidence;
+  bool given_poses_kept = false;
   double ms = 0.0;                       // the estimate's time, every frame's share included
 };
 

@@ -46,6 +46,12 @@ inline constexpr ParameterKey<bool> localise{
     "1: while a posed sequence runs (detect, the GUI, a live camera) each frame is localised "
     "against the structure mapped so far and takes its context with that pose; 0: frames keep "
     "their given poses (map and fuse still optimise them)"};
+inline constexpr ParameterKey<double> correction_sigmas{
+    "slam.correction_sigmas", "sigma", 3.0, 0.0, 100.0, 0.5, Stage::Map, "Evidence for a correction",
+    "The poses are corrected only when the structure disagrees with them by more than its "
+    "measurements' noise explains: the cost the correction removes must exceed its chi-square "
+    "expectation by this many standard deviations; otherwise the given poses are kept (0: always "
+    "correct)"};
 inline constexpr ParameterKey<int> window_groups{
     "slam.window_groups", "poses", 12, 2, 1000, 1, Stage::Map, "Window",
     "Pose groups re-estimated after each new frame while the sequence runs (the batch "
@@ -62,6 +68,7 @@ struct SlamOptions {
   double plate_gate_m = slam_keys::plate_gate_m.default_value;
   double point_sigma_m = mm_to_m(slam_keys::point_sigma_mm.default_value);
   double patch_floor_m = mm_to_m(slam_keys::patch_floor_mm.default_value);
+  double correction_sigmas = slam_keys::correction_sigmas.default_value;
   int window_groups = slam_keys::window_groups.default_value;
   bool localise = slam_keys::localise.default_value;
   // Odometry of pose groups that did not move still has this much uncertainty.

@@ -278,11 +278,31 @@ PoseCorrection StructureSlam::correction(std::size_t g) const {
   return c;
 }
 
+// The landmarks fitted to the poses as given (poses held): the null hypothesis the optimum is
+// tested against.
+PoseGraphSolution StructureSlam::solve_at_given_poses() const {
+  PoseGraph given = graph_;
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    given.poses[g] = groups_[g].odometry;
+    given.fixed[g] = true;
+  }
+  return solve_pose_graph(given);
+}
+
 PoseRefinement StructureSlam::finish() {
   const auto t0 = std::chrono::steady_clock::now();
   PoseRefinement out;
   if (groups_.empty()) return out;
   PoseGraphSolution s = solve_pose_graph(graph_);
+  if (options_.correction_sigmas > 0.0) {
+    PoseGraphSolution given = solve_at_given_poses();
+    out.evidence = correction_evidence(given.final_cost, s.final_cost, static_cast<int>(groups_.size()) - 1,
+                                       options_.correction_sigmas);
+    out.given_poses_kept = !out.evidence.significant;
+    if (out.given_poses_kept) s = std::move(given);
+  } else {
+    out.evidence = correction_evidence(0.0, 0.0, static_cast<int>(groups_.size()) - 1, 0.0);
+  }
   graph_.poses = s.poses;
   graph_.planes = s.planes;
   out.ran = !graph_.patches.empty();

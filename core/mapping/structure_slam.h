@@ -67,6 +67,7 @@ class StructureSlam {
   std::vector<int> wall_layers(const std::vector<const FramePatch*>& patches, const Eigen::Isometry3d& camera_to_world);
   int add_plane(const Eigen::Vector3d& normal, double offset);
   void solve_window();
+  PoseGraphSolution solve_at_given_poses() const;
   PoseCorrection correction(std::size_t g) const;
 
   SlamOptions options_;
