@@ -116,7 +116,9 @@ nlohmann::json volume_json(const FusionResult& r) {
             {"blocks", r.volume->block_count()},
             {"voxels", r.volume->voxel_count()},
             {"bytes", r.volume->memory_bytes()},
-            {"voxel_m", r.volume->voxel_m()}};
+            {"voxel_m", r.volume->voxel_m()},
+            {"grid_yaw_deg", r.lattice.yaw_deg},
+            {"grid_heading", heading_source_name(r.lattice.source)}};
   const VoxelGrid& g = r.dense_volume->grid();
   return {{"kind", "dense"},
           {"blocks", nullptr},
