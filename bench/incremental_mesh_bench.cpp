@@ -8,13 +8,10 @@
 // chunks in all, blocks, vertices.
 #include <benchmark/benchmark.h>
 
-#include <filesystem>
-
+#include "bench/field_walk.h"
 #include "core/fusion/fusion_options.h"
 #include "core/fusion/sparse_tsdf_volume.h"
-#include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
-#include "core/sim/sim_dataset_writer.h"
 #include "mesh/sparse_mesher.h"
 #include "mesh/tsdf_mesher.h"
 
@@ -28,38 +25,23 @@ struct FusedWalk {
   int min_weight = 0;
 };
 
-FusedWalk& fused_walk() {
-  static FusedWalk w = [] {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "tunnelmap-remesh-bench";
-    if (!fs::exists(dir / "dataset.json")) {
-      SimConfig c = SimConfig::from_preset("field");
-      c.frames = 50;
-      c.diaphragm_x_m = {4.0, 8.0};
-      SimWalk walk;
-      walk.start_x_m = 0.5;
-      walk.end_x_m = 10.3;
-      walk.stops = 50;
-      c.walk = walk;
-      write_sim_dataset(dir.string(), c);
-    }
-    const Dataset ds = read_dataset(dir.string());
-    const FusionOptions o;
-    TsdfOptions t = tsdf_options(o);
-    t.threads = 2;
-    FusedWalk f;
-    f.volume = std::make_unique<SparseTsdfVolume>(o.voxel_m, t);
-    f.min_weight = o.min_weight;
-    for (std::size_t i = 0; i < ds.frames.size(); ++i) f.volume->integrate(ds.load_frame(i), *resolve_frame_pose(ds, i).pose);
-    f.last = ds.load_frame(ds.frames.size() / 2);  // a frame in the middle of the walk
-    f.last_pose = *resolve_frame_pose(ds, ds.frames.size() / 2).pose;
-    return f;
-  }();
-  return w;
+// A fresh volume per benchmark (BM_RemeshAfterOneFrame integrates into its own).
+FusedWalk fused_walk() {
+  const Dataset ds = field_walk_dataset({"tunnelmap-remesh-bench", 50, 50, 10.3, {4.0, 8.0}});
+  const FusionOptions o;
+  TsdfOptions t = tsdf_options(o);
+  t.threads = 2;
+  FusedWalk f;
+  f.volume = std::make_unique<SparseTsdfVolume>(o.voxel_m, t);
+  f.min_weight = o.min_weight;
+  for (std::size_t i = 0; i < ds.frames.size(); ++i) f.volume->integrate(ds.load_frame(i), *resolve_frame_pose(ds, i).pose);
+  f.last = ds.load_frame(ds.frames.size() / 2);  // a frame in the middle of the walk
+  f.last_pose = *resolve_frame_pose(ds, ds.frames.size() / 2).pose;
+  return f;
 }
 
 void BM_RemeshAfterOneFrame(benchmark::State& state) {
-  FusedWalk& w = fused_walk();
+  FusedWalk w = fused_walk();
   IncrementalMesher mesher(w.min_weight);
   mesher.update(*w.volume);
   std::size_t chunks = 0;
@@ -75,7 +57,7 @@ void BM_RemeshAfterOneFrame(benchmark::State& state) {
 }
 
 void BM_RemeshFull(benchmark::State& state) {
-  FusedWalk& w = fused_walk();
+  FusedWalk w = fused_walk();
   std::size_t vertices = 0;
   for (auto _ : state) vertices = extract_mesh(*w.volume, w.min_weight).vertices.size();
   state.counters["all_chunks"] = double(occupied_chunks(*w.volume).size());
@@ -83,7 +65,7 @@ void BM_RemeshFull(benchmark::State& state) {
 }
 
 void BM_RemeshMerge(benchmark::State& state) {
-  FusedWalk& w = fused_walk();
+  FusedWalk w = fused_walk();
   IncrementalMesher mesher(w.min_weight);
   mesher.update(*w.volume);
   std::size_t vertices = 0;
