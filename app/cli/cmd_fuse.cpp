@@ -118,8 +118,7 @@ nlohmann::json volume_json(const FusionResult& r) {
             {"bytes", r.volume->memory_bytes()},
             {"voxel_m", r.volume->voxel_m()},
             {"grid_yaw_deg", r.lattice.yaw_deg},
-            {"grid_heading", heading_source_name(r.lattice.source)},
-            {"grid_origin_m", vec(r.lattice.origin)}};
+            {"grid_heading", heading_source_name(r.lattice.source)}};
   const VoxelGrid& g = r.dense_volume->grid();
   return {{"kind", "dense"},
           {"blocks", nullptr},

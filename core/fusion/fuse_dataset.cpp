@@ -5,7 +5,6 @@
 
 #include "core/engine/run_engine.h"
 #include "core/fusion/fusion_options.h"
-#include "core/fusion/lattice_offset.h"
 #include "core/mapping/posed_sequence.h"
 #include "core/util/error.h"
 
@@ -129,11 +128,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     r.dense_volume = std::make_unique<TsdfVolume>(fusion_grid(posed_depth_box(boxes, poses), fo), to);
   else {
     r.lattice = lattice_heading(posed_maps(r.frames), r.merged.map, ds.up);
-    // Only along a long walk: a short one keeps the dense volume's lattice, for comparison.
-    if (r.lattice.source == HeadingSource::CentreLine)
-      r.lattice.origin = wall_centred_origin(r.merged.map, r.lattice.lattice_to_world, fo.voxel_m);
-    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo), r.lattice.lattice_to_world,
-                                                  r.lattice.origin);
+    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo), r.lattice.lattice_to_world);
   }
   for (int i = 0; i < n; ++i) {
     const DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));

@@ -24,9 +24,6 @@ struct LatticeHeading {
   Eigen::Matrix3d lattice_to_world = Eigen::Matrix3d::Identity();
   double yaw_deg = 0.0;  // of the lattice's x about the world vertical
   HeadingSource source = HeadingSource::World;
-  // World position of the lattice's origin (core/fusion/lattice_offset.h); fusion moves it
-  // when the heading is fitted through the centre line.
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
 };
 
 // Frames' centre-line points further apart than this along the girder give the heading

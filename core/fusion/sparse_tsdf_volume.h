@@ -53,8 +53,7 @@ class SparseTsdfVolume {
   // Throws ParameterError when voxel_m is not positive.
   SparseTsdfVolume(double voxel_m, const TsdfOptions& options,
                    const SparseVolumeLimits& limits = SparseVolumeLimits(),
-                   const Eigen::Matrix3d& lattice_to_world = Eigen::Matrix3d::Identity(),
-                   const Eigen::Vector3d& lattice_origin = Eigen::Vector3d::Zero());
+                   const Eigen::Matrix3d& lattice_to_world = Eigen::Matrix3d::Identity());
 
   // Fuses one depth frame (and its registered colour, if any) seen from `camera_to_world`.
   // Throws ParameterError when the new blocks break a limit (the volume is then unchanged
@@ -65,8 +64,6 @@ class SparseTsdfVolume {
   double block_m() const { return voxel_m_ * kBlockSide; }
   const TsdfOptions& options() const { return options_; }
   const Eigen::Matrix3d& lattice_to_world() const { return lattice_to_world_; }
-  // World position of the lattice frame's origin (voxel (0, 0, 0)'s centre).
-  const Eigen::Vector3d& lattice_origin() const { return lattice_origin_; }
   int frames_integrated() const { return frames_; }
 
   std::size_t block_count() const { return blocks_.size(); }
@@ -93,7 +90,6 @@ class SparseTsdfVolume {
   TsdfOptions options_;
   SparseVolumeLimits limits_;
   Eigen::Matrix3d lattice_to_world_;
-  Eigen::Vector3d lattice_origin_;
   std::vector<std::unique_ptr<VoxelBlock>> blocks_;
   // Each block's coordinates again, packed: the per-frame visibility test reads these in one
   // sequential pass instead of visiting every block's 5 KiB (a long girder has 10^5 blocks).
