@@ -12,17 +12,16 @@
 #include <time.h>
 
 #include <chrono>
-#include <filesystem>
 #include <functional>
 
 #include "bench/bench_frames.h"
+#include "bench/field_walk.h"
 #include "bench/openvdb_peer.h"
 #include "core/fusion/fusion_options.h"
 #include "core/fusion/sparse_tsdf_volume.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/io/dataset.h"
 #include "core/kinematics/frame_pose.h"
-#include "core/sim/sim_dataset_writer.h"
 
 namespace tunnelmap::bench {
 namespace {
@@ -35,20 +34,7 @@ struct PosedFrames {
 
 const PosedFrames& girder() {
   static const PosedFrames g = [] {
-    namespace fs = std::filesystem;
-    const fs::path dir = fs::temp_directory_path() / "tunnelmap-fusion-bench";
-    if (!fs::exists(dir / "dataset.json")) {
-      SimConfig c = SimConfig::from_preset("field");
-      c.frames = 16;
-      c.diaphragm_x_m = {2.5, 5.0};
-      SimWalk w;
-      w.start_x_m = 0.5;
-      w.end_x_m = 7.5;
-      w.stops = 8;
-      c.walk = w;
-      write_sim_dataset(dir.string(), c);
-    }
-    const Dataset ds = read_dataset(dir.string());
+    const Dataset ds = field_walk_dataset({"tunnelmap-fusion-bench", 16, 8, 7.5, {2.5, 5.0}});
     PosedFrames p;
     for (std::size_t i = 0; i < ds.frames.size(); ++i) {
       p.frames.push_back(ds.load_frame(i));

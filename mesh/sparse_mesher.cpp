@@ -6,7 +6,13 @@
 #include <chrono>
 #include <cmath>
 #include <set>
+#include <functional>
+#include <limits>
 #include <unordered_map>
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "mesh/flying_edges.h"
 
@@ -243,6 +249,9 @@ namespace {
 // twice its size at that moment, beside the volume (+400 MB for a 200 m girder). A mesh that
 // needs more still grows as usual.
 constexpr std::size_t kReservedVerticesPerBlock = 256, kReservedTrianglesPerBlock = 512;
+// A releasing extraction frees the swept blocks in this many steps along the girder (each step
+// compacts the block list and index once).
+constexpr int kReleaseSteps = 32;
 
 void reserve_address_space(std::size_t blocks, TriangleMesh& mesh) {
   mesh.vertices.reserve(blocks * kReservedVerticesPerBlock);
@@ -252,12 +261,15 @@ void reserve_address_space(std::size_t blocks, TriangleMesh& mesh) {
 }
 }  // namespace
 
-TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshStats* stats) {
+namespace {
+// Extracts `which` in batches, extracted in parallel and appended in order: only one batch's
+// chunk meshes exist beside the mesh, never all of a long girder's. `after_batch` gets the last
+// chunk extracted so far.
+TriangleMesh extract_in_batches(const SparseTsdfVolume& volume, const std::vector<Eigen::Vector3i>& which,
+                                int min_weight, MeshStats* stats,
+                                const std::function<void(const Eigen::Vector3i&)>& after_batch) {
   const auto start = std::chrono::steady_clock::now();
-  // Batches of chunks, extracted in parallel and appended in order (the order merge_chunks
-  // uses): only one batch's chunk meshes exist beside the mesh, never all of a long girder's.
   constexpr std::size_t kBatchChunks = 256;
-  const std::vector<Eigen::Vector3i> which = occupied_chunks(volume);
   TriangleMesh mesh;
   reserve_address_space(volume.block_count(), mesh);
   MeshStats st;
@@ -273,10 +285,57 @@ TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshSt
       st.dropped_unseen += c.dropped_unseen;
       if (!c.mesh.triangles.empty()) append_chunk(c, seam_vertex, remap, mesh);
     }
+    if (after_batch) after_batch(which[first + batch.size() - 1]);
   }
   st.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (stats) *stats = st;
+  return mesh;
+}
+
+// The lattice axis along which the volume's blocks span the most (the girder's).
+int longest_axis(const std::vector<Eigen::Vector3i>& chunks) {
+  Eigen::AlignedBox3i box;
+  for (const Eigen::Vector3i& c : chunks) box.extend(c);
+  int axis = 0;
+  (box.max() - box.min()).maxCoeff(&axis);
+  return axis;
+}
+
+// Gives the freed pages back to the system (the blocks are 5 KiB heap allocations).
+void return_free_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+}  // namespace
+
+TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshStats* stats) {
+  return extract_in_batches(volume, occupied_chunks(volume), min_weight, stats, nullptr);
+}
+
+TriangleMesh extract_mesh_releasing(SparseTsdfVolume& volume, int min_weight, MeshStats* stats) {
+  std::vector<Eigen::Vector3i> which = occupied_chunks(volume);
+  if (which.empty()) return {};
+  // Chunks in order along the girder: once the sweep has passed a block, no chunk left reads it.
+  const int axis = longest_axis(which);
+  std::stable_sort(which.begin(), which.end(),
+                   [axis](const Eigen::Vector3i& a, const Eigen::Vector3i& b) { return a[axis] < b[axis]; });
+  const int span_blocks = (which.back()[axis] - which.front()[axis] + 1) * kChunkBlocks;
+  const int step = std::max(kChunkBlocks, span_blocks / kReleaseSteps);
+  int released_below = which.front()[axis] * kChunkBlocks;
+  const auto release = [&](const Eigen::Vector3i& last) {
+    // Chunks before `last` along the axis are meshed; chunk c reads blocks up to 4c + 4, so
+    // blocks up to 4 last - 2 are needed by none of the chunks left.
+    const int below = last[axis] * kChunkBlocks - 1;
+    if (below - released_below < step) return;
+    volume.release_blocks_below(axis, below);
+    released_below = below;
+    return_free_memory();
+  };
+  TriangleMesh mesh = extract_in_batches(volume, which, min_weight, stats, release);
+  volume.release_blocks_below(axis, std::numeric_limits<int>::max());
+  return_free_memory();
   return mesh;
 }
 

@@ -20,5 +20,9 @@ TriangleMesh extract_mesh(const TsdfVolume& volume, int min_weight, MeshStats* s
 // The same for the sparse volume, chunk by chunk (mesh/sparse_mesher.h): the same vertices up to
 // the lattice's offset, merged where chunks meet.
 TriangleMesh extract_mesh(const SparseTsdfVolume& volume, int min_weight, MeshStats* stats = nullptr);
+// The same mesh (vertices in the order of a sweep along the volume's longest lattice axis),
+// freeing the blocks as the sweep passes them, so that the volume and the whole mesh are never
+// held together; the volume has no blocks afterwards.
+TriangleMesh extract_mesh_releasing(SparseTsdfVolume& volume, int min_weight, MeshStats* stats = nullptr);
 
 }  // namespace tunnelmap

@@ -11,8 +11,10 @@
 #include <QMenu>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <atomic>
 
 #include "core/mapping/map_options.h"
+#include "ui/background_job.h"
 #include "ui/depth_view_widget.h"
 #include "ui/file_dialogs.h"
 #include "ui/frame_keys.h"
@@ -261,19 +263,48 @@ void FrameController::stop_live() {
 }
 
 bool FrameController::open_mesh(const QString& path) {
-  vtkSmartPointer<vtkPolyData> mesh;
-  try {
-    mesh = read_mesh_ply(path.toStdString());
-  } catch (const std::exception& e) {
-    ctx_.status->show_error(QString::fromStdString(e.what()));
+  if (ctx_.job->running()) {
+    ctx_.status->show_error(tr("%1: wait for the running job, or cancel it, before opening a mesh").arg(path));
     return false;
+  }
+  ctx_.status->show_progress(0);  // busy while the file is read, then the pieces
+  ctx_.status->set_text(tr("Opening mesh %1…").arg(path));
+  const std::atomic<bool>& cancel = ctx_.job->cancel_flag();
+  ctx_.job->start([this, path, &cancel] {
+    vtkSmartPointer<vtkPolyData> mesh;
+    QString error;
+    try {
+      mesh = read_mesh_ply(path.toStdString(), [this, &cancel](int done, int total) {
+        QMetaObject::invokeMethod(this, [this, done, total] { ctx_.status->set_progress(done, total); });
+        return !cancel.load();
+      });
+    } catch (const std::exception& e) {
+      error = QString::fromStdString(e.what());
+    }
+    if (cancel.load()) mesh = nullptr;  // a cancel while the file was read
+    QMetaObject::invokeMethod(this, [=] { finish_open_mesh(path, mesh, error); });
+  });
+  return true;
+}
+
+// On the GUI thread: the mesh swapped into the view.
+void FrameController::finish_open_mesh(const QString& path, vtkSmartPointer<vtkPolyData> mesh, const QString& error) {
+  ctx_.status->hide_progress();
+  ctx_.job->finished();
+  if (!error.isEmpty()) {
+    ctx_.status->show_error(error);
+    return emit meshOpened(false);
+  }
+  if (!mesh) {
+    ctx_.status->set_text(tr("Opening mesh %1 cancelled").arg(path));
+    return emit meshOpened(false);
   }
   mesh_.show(mesh, current_.get(), last_.frame_index);
   ctx_.status->set_text(tr("Mesh %1: %2 vertices, %3 triangles")
                             .arg(path)
                             .arg(mesh->GetNumberOfPoints())
                             .arg(mesh->GetNumberOfPolys()));
-  return true;
+  emit meshOpened(true);
 }
 
 }  // namespace tunnelmap::ui

@@ -61,11 +61,15 @@ class FrameController : public QObject {
   void stop_live();
   std::function<bool()> live_running = [] { return false; };  // frames come from the camera
 
-  bool open_mesh(const QString& path);  // a triangle mesh PLY in the world frame
+  // A triangle mesh PLY in the world frame, read and cut into pieces on the background job
+  // (progress and Cancel in the status bar) and shown when ready: meshOpened tells the outcome.
+  // False, and nothing started, while another job runs.
+  bool open_mesh(const QString& path);
   MeshOverlay& mesh() { return mesh_; }
 
  signals:
   void frameShown();  // a pipeline result reached the views
+  void meshOpened(bool ok);  // open_mesh finished: shown, or failed or cancelled
 
  private:
   void build_parameters_dock();
@@ -73,6 +77,7 @@ class FrameController : public QObject {
   void on_run_finished(const RunOutcome& outcome);
   void show_views(const RunOutcome& outcome);
   void record_result(const RunOutcome& outcome);
+  void finish_open_mesh(const QString& path, vtkSmartPointer<vtkPolyData> mesh, const QString& error);
 
   WindowContext& ctx_;
   QDockWidget* params_dock_ = nullptr;

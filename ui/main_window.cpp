@@ -87,6 +87,7 @@ void MainWindow::create_controllers() {
   connect(status_->cancel_button(), &QPushButton::clicked, this, [this] { job_.cancel(); });
   // Last, so that every controller has followed the frame before a listener hears of it.
   connect(frames_, &FrameController::frameShown, this, &MainWindow::frameShown);
+  connect(frames_, &FrameController::meshOpened, this, &MainWindow::meshOpened);
   connect(review_, &ReviewController::tunnelMapped, this, &MainWindow::tunnelMapped);
   connect(fusion_, &FusionController::fusionFinished, this, &MainWindow::fusionFinished);
   connect(status_, &WindowStatus::errorShown, this, &MainWindow::errorShown);

@@ -79,6 +79,7 @@ class MainWindow : public QMainWindow {
   int frame_index() const { return frames_->frame_index(); }
   void set_method(Method method) { frames_->set_method(method); }
   Method method() const { return frames_->method(); }
+  // Starts opening the mesh on the background job (false: another job runs); meshOpened tells.
   bool open_mesh(const QString& path) { return frames_->open_mesh(path); }
   const scene::ProcessedFrame* current() const { return frames_->current(); }
   int shown_runs() const { return frames_->shown_runs(); }
@@ -138,6 +139,7 @@ class MainWindow : public QMainWindow {
 
  signals:
   void frameShown();  // a pipeline result reached the views
+  void meshOpened(bool ok);  // open_mesh or File > Open mesh finished (false: error or cancelled)
   void tunnelMapped(bool ok);
   void errorShown(const QString& message);
   void fusionFinished(bool ok);

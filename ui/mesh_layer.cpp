@@ -9,7 +9,7 @@
 
 namespace tunnelmap::ui {
 
-vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& m) {
+vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& m, const PieceProgress& progress) {
   auto poly = scene::mesh_polydata(m);
   if (m.normals.size() == m.vertices.size() && !m.normals.empty()) {
     auto normals = vtkSmartPointer<vtkFloatArray>::New();
@@ -20,7 +20,7 @@ vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& m) {
       for (int k = 0; k < 3; ++k) normals->SetTypedComponent(static_cast<vtkIdType>(i), k, m.normals[i][k]);
     poly->GetPointData()->SetNormals(normals);
   }
-  return with_level_of_detail(poly);
+  return with_level_of_detail(poly, progress);
 }
 
 vtkSmartPointer<vtkPolyData> mesh_in_camera_frame(vtkPolyData* world_mesh, const Eigen::Isometry3d& world_to_camera) {

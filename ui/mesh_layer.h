@@ -6,13 +6,15 @@
 #include <vtkSmartPointer.h>
 
 #include "core/io/ply_mesh_reader.h"
+#include "ui/mesh_level_of_detail.h"
 
 namespace tunnelmap::ui {
 
 // Points, triangles and vertex colours through scene::mesh_polydata (the converter the fused
 // scene uses for its TSDF mesh), plus the file's normals when it has them. A long mesh comes
 // back as its decimated overview carrying its pieces (ui/mesh_level_of_detail.h).
-vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& mesh);
+// Null when `progress` (ui/mesh_level_of_detail.h) cancelled the cutting.
+vtkSmartPointer<vtkPolyData> ply_mesh_polydata(const PlyMesh& mesh, const PieceProgress& progress = {});
 
 // `world_mesh` with every point mapped by `world_to_camera`; normals dropped (world-frame
 // normals would light it wrongly). Shares the cells and colours of `world_mesh`. A long mesh's

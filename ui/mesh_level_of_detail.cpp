@@ -144,7 +144,7 @@ vtkSmartPointer<vtkPolyData> joined(const std::vector<vtkPolyData*>& pieces, con
 
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> with_level_of_detail(vtkPolyData* mesh) {
+vtkSmartPointer<vtkPolyData> with_level_of_detail(vtkPolyData* mesh, const PieceProgress& progress) {
   if (!mesh || mesh->GetNumberOfPolys() < kLevelOfDetailMinTriangles) return mesh;
   double b[6];
   mesh->GetBounds(b);
@@ -159,6 +159,7 @@ vtkSmartPointer<vtkPolyData> with_level_of_detail(vtkPolyData* mesh) {
   std::vector<vtkIdType> new_id(static_cast<std::size_t>(mesh->GetNumberOfPoints()), -1);
   std::vector<vtkPolyData*> overview;
   for (std::size_t i = 0; i < pieces; ++i) {
+    if (progress && !progress(static_cast<int>(i), static_cast<int>(pieces))) return nullptr;
     if (by_piece[i].empty()) continue;
     lod.from_m.push_back(from + double(i) * kLevelOfDetailPieceM);
     lod.to_m.push_back(lod.from_m.back() + kLevelOfDetailPieceM);

@@ -8,6 +8,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <vector>
 
 namespace tunnelmap::ui {
@@ -24,10 +25,14 @@ struct MeshLevelOfDetail {
   std::vector<vtkSmartPointer<vtkPolyData>> full, coarse;  // world frame, float points, "RGB"
 };
 
+// Told the pieces cut so far and how many there are; false stops the work (cancelled).
+using PieceProgress = std::function<bool(int done, int total)>;
+
 // `mesh` itself when it has fewer than kLevelOfDetailMinTriangles triangles; else the
 // decimated pieces as one polydata (the overview of the whole girder) carrying the pieces, for
-// level_of_detail() to find. Normals are not kept (a moved mesh is lit from its faces).
-vtkSmartPointer<vtkPolyData> with_level_of_detail(vtkPolyData* mesh);
+// level_of_detail() to find. Normals are not kept (a moved mesh is lit from its faces). Null
+// when `progress` returned false.
+vtkSmartPointer<vtkPolyData> with_level_of_detail(vtkPolyData* mesh, const PieceProgress& progress = {});
 
 // The pieces `mesh` carries, or null.
 const MeshLevelOfDetail* level_of_detail(vtkPolyData* mesh);

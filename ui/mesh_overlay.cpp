@@ -8,11 +8,11 @@
 
 namespace tunnelmap::ui {
 
-vtkSmartPointer<vtkPolyData> read_mesh_ply(const std::string& file) {
+vtkSmartPointer<vtkPolyData> read_mesh_ply(const std::string& file, const PieceProgress& progress) {
   const PlyMesh ply = read_ply_mesh(file);  // InputError(file, problem) on any bad input
   if (ply.vertices.empty()) throw InputError(file, "PLY has no vertices");
   if (ply.triangles.empty()) throw InputError(file, "PLY has no faces (not a mesh)");
-  return ply_mesh_polydata(ply);
+  return ply_mesh_polydata(ply, progress);
 }
 
 void MeshOverlay::show(vtkSmartPointer<vtkPolyData> world_mesh, const scene::ProcessedFrame* shown, int frame) {

@@ -7,6 +7,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "ui/mesh_level_of_detail.h"
+
 namespace tunnelmap::scene {
 struct ProcessedFrame;
 }
@@ -15,9 +17,10 @@ namespace tunnelmap::ui {
 
 class View3DWidget;
 
-// A triangle mesh PLY as polydata; InputError(file, problem) for a bad file, one without
-// vertices or one without faces (a point cloud is not a mesh).
-vtkSmartPointer<vtkPolyData> read_mesh_ply(const std::string& file);
+// A triangle mesh PLY as polydata, a long one cut into pieces (`progress`: as they are cut, false
+// cancels and gives null); InputError(file, problem) for a bad file, one without vertices or one
+// without faces (a point cloud is not a mesh). Safe on a worker thread.
+vtkSmartPointer<vtkPolyData> read_mesh_ply(const std::string& file, const PieceProgress& progress = {});
 
 class MeshOverlay {
  public:

@@ -117,7 +117,9 @@ nlohmann::json volume_json(const FusionResult& r) {
             {"blocks", r.volume->block_count()},
             {"voxels", r.volume->voxel_count()},
             {"bytes", r.volume->memory_bytes()},
-            {"voxel_m", r.volume->voxel_m()}};
+            {"voxel_m", r.volume->voxel_m()},
+            {"grid_yaw_deg", r.lattice.yaw_deg},
+            {"grid_heading", heading_source_name(r.lattice.source)}};
   const VoxelGrid& g = r.dense_volume->grid();
   return {{"kind", "dense"},
           {"blocks", nullptr},
@@ -173,15 +175,16 @@ void run(const FuseOptions& o, CliContext& ctx) {
     progress.step(static_cast<std::size_t>(done) + (stage == "integrate" ? ds.frames.size() : 0));
   };
   FusionResult r = fuse_with_limits(ds, params, s, o.in.input);
-  MeshStats ms;
-  const int min_weight = fusion_options(params).min_weight;
-  const TriangleMesh mesh =
-      r.volume ? extract_mesh(*r.volume, min_weight, &ms) : extract_mesh(*r.dense_volume, min_weight, &ms);
-  r.timings_ms["mesh"] = ms.milliseconds;
-  // The volume is not needed past the mesh: free it before the mesh is copied for the
-  // accuracy and cut into pieces (a 100 m girder's blocks and mesh are ~600 MB and ~300 MB).
   const nlohmann::json volume_doc = volume_json(r);
   const std::string volume_text = volume_summary(r);
+  MeshStats ms;
+  const int min_weight = fusion_options(params).min_weight;
+  // The volume is not needed past the mesh: its blocks are freed as the mesher sweeps past
+  // them (a 100 m girder's blocks and mesh are ~600 MB and ~300 MB), and the rest before the
+  // mesh is copied for the accuracy and cut into pieces.
+  const TriangleMesh mesh = r.volume ? extract_mesh_releasing(*r.volume, min_weight, &ms)
+                                     : extract_mesh(*r.dense_volume, min_weight, &ms);
+  r.timings_ms["mesh"] = ms.milliseconds;
   r.volume.reset();
   r.dense_volume.reset();
 

@@ -26,19 +26,10 @@ Eigen::AlignedBox3d posed_depth_box(const std::vector<Eigen::AlignedBox3d>& boxe
   return box;
 }
 
-
-// The sparse lattice turned about the vertical to the tunnel's heading, so that the walls lie
-// along lattice planes (a wall at 45 deg to the lattice crosses ~40 % more blocks and lattice
-// edges). Within 1 deg of a world axis, or without a map, the world's axes: a sagging arm's
-// slightly tilted map then does not turn the lattice against the true walls.
-Eigen::Matrix3d heading_lattice(const TunnelMap& map, const Eigen::Vector3d& world_up) {
-  const Eigen::Vector3d up = world_up.normalized();
-  if (!map.detected || std::abs(up.z()) < 0.999) return Eigen::Matrix3d::Identity();
-  const double heading = std::atan2(map.axis_dir.y(), map.axis_dir.x());
-  const double quarter = M_PI / 2;
-  const double off_axis = heading - quarter * std::round(heading / quarter);
-  if (std::abs(off_axis) < M_PI / 180.0) return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(off_axis, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+std::vector<PosedMap> posed_maps(const std::vector<FusedFrame>& frames) {
+  std::vector<PosedMap> out;
+  for (const FusedFrame& f : frames) out.push_back({&f.map, f.camera_to_world});
+  return out;
 }
 // Every fused point lies within max_depth of its camera, so cameras further apart than the
 // volume may span plus twice that depth make data too wide to fuse: refused before a frame is
@@ -135,9 +126,10 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   to.threads = s.threads;
   if (s.dense)
     r.dense_volume = std::make_unique<TsdfVolume>(fusion_grid(posed_depth_box(boxes, poses), fo), to);
-  else
-    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo),
-                                                  heading_lattice(r.merged.map, ds.up));
+  else {
+    r.lattice = lattice_heading(posed_maps(r.frames), r.merged.map, ds.up);
+    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo), r.lattice.lattice_to_world);
+  }
   for (int i = 0; i < n; ++i) {
     const DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));
     const Eigen::Isometry3d& pose = poses[static_cast<std::size_t>(i)];

@@ -13,6 +13,7 @@
 #include "core/mapping/multi_scan_map.h"
 #include "core/mapping/pose_refinement.h"
 #include "core/mapping/station_map.h"
+#include "core/fusion/lattice_heading.h"
 #include "core/fusion/sparse_tsdf_volume.h"
 #include "core/fusion/tsdf_volume.h"
 #include "core/params/parameters.h"
@@ -41,6 +42,7 @@ struct FuseSettings {
 struct FusionResult {
   std::unique_ptr<SparseTsdfVolume> volume;      // null when settings.dense
   std::unique_ptr<TsdfVolume> dense_volume;      // only when settings.dense
+  LatticeHeading lattice;  // the sparse volume's lattice, fixed before the first frame
   std::vector<FusedFrame> frames;
   MultiScanMap merged;
   StationMap stations;  // the map along the tunnel: sections that change (`fuse --map`)

@@ -50,6 +50,33 @@ std::vector<Eigen::Vector3i> SparseTsdfVolume::blocks_touched_since(int first_fr
   return out;
 }
 
+std::size_t SparseTsdfVolume::release_blocks_below(int axis, int coord) {
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < blocks_.size(); ++i) {
+    if (block_coords_[i][axis] < coord) {
+      index_.erase(block_coords_[i]);
+      blocks_[i].reset();
+      continue;
+    }
+    if (kept != i) {
+      blocks_[kept] = std::move(blocks_[i]);
+      block_coords_[kept] = block_coords_[i];
+      index_[block_coords_[kept]] = static_cast<std::int32_t>(kept);
+    }
+    ++kept;
+  }
+  const std::size_t released = blocks_.size() - kept;
+  blocks_.resize(kept);
+  block_coords_.resize(kept);
+  touched_.clear();
+  if (kept == 0) {
+    blocks_.shrink_to_fit();
+    block_coords_.shrink_to_fit();
+    index_ = {};
+  }
+  return released;
+}
+
 VoxelBlock& SparseTsdfVolume::block_at(const Eigen::Vector3i& coords) {
   const auto [it, inserted] = index_.try_emplace(coords, static_cast<std::int32_t>(blocks_.size()));
   if (!inserted) return *blocks_[static_cast<std::size_t>(it->second)];

@@ -75,6 +75,10 @@ class SparseTsdfVolume {
   const VoxelBlock* find(const Eigen::Vector3i& coords) const;
   // Blocks that frames number `first_frame` (0-based) and later integrated.
   std::vector<Eigen::Vector3i> blocks_touched_since(int first_frame) const;
+  // Frees the blocks whose coordinate along `axis` (0, 1, 2) is below `coord` (a mesher that
+  // sweeps along the girder frees what it has meshed); returns how many. The others keep their
+  // voxels and stay in allocation order.
+  std::size_t release_blocks_below(int axis, int coord);
 
  private:
   VoxelBlock& block_at(const Eigen::Vector3i& coords);  // allocates when new

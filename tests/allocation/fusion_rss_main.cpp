@@ -109,8 +109,7 @@ FusedGirder fuse_girder(const Dataset& ds, const Parameters& params, const nlohm
     g.half_mib_per_m = mib_per_m(half);
   }
   MeshStats ms;
-  const TriangleMesh mesh = extract_mesh(*r.volume, fusion_options(params).min_weight, &ms);
-  r.volume.reset();
+  const TriangleMesh mesh = extract_mesh_releasing(*r.volume, fusion_options(params).min_weight, &ms);
   g.vertices = mesh.vertices.size();
   g.mesh_s = ms.milliseconds / 1000.0;
   g.within = mesh_accuracy(mesh, ground_truth_planes(ground_truth), 0.010, world_to_truth).fraction_within;

@@ -9,6 +9,7 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QProcess>
 #include <QtTest/QtTest>
 #include <vtkRenderWindow.h>
@@ -131,10 +132,38 @@ class GuiLongMeshTest : public QObject {
       tunnelmap::write_mesh_ply(ply.toStdString(), girder, {});
       triangles = static_cast<long long>(girder.triangles.size());
     }
-    QElapsedTimer open;
-    open.start();
+    // Cancel while the file is read: nothing shown, the job ends.
+    QSignalSpy opened(&w, &MainWindow::meshOpened);
     QVERIFY(w.open_mesh(ply));
+    QVERIFY(!w.open_mesh(ply));  // one job at a time
+    w.cancel_sequence();  // the status bar's Cancel
+    QVERIFY(opened.wait(120000));
+    QCOMPARE(opened.takeFirst().at(0).toBool(), false);
+    QCOMPARE(w.view3d()->scene().layer_size(tunnelmap::scene::Layer::Mesh), vtkIdType(0));
+
+    // Opened on the background job: the event loop keeps turning while the file is read and
+    // cut (a 10 ms timer's longest gap), and the mesh is swapped in when ready.
+    QElapsedTimer open, since_tick;
+    double longest_gap_ms = 0.0;
+    int ticks = 0;
+    QTimer tick;
+    tick.setInterval(10);
+    QObject::connect(&tick, &QTimer::timeout, [&] {
+      longest_gap_ms = std::max(longest_gap_ms, since_tick.nsecsElapsed() / 1e6);
+      since_tick.restart();
+      ++ticks;
+    });
+    open.start();
+    since_tick.start();
+    tick.start();
+    QVERIFY(w.open_mesh(ply));
+    QVERIFY(opened.wait(300000));
+    tick.stop();
     const double open_s = open.nsecsElapsed() / 1e9;
+    QCOMPARE(opened.takeFirst().at(0).toBool(), true);
+    qInfo("opening on the background job: %.1f s, %d ticks of the event loop, longest gap %.0f ms", open_s, ticks,
+          longest_gap_ms);
+    QVERIFY2(longest_gap_ms < 1000.0, qPrintable(QString("the event loop stalled for %1 ms").arg(longest_gap_ms)));
 
     vtkPolyData* shown = w.view3d()->scene().layer_polydata(tunnelmap::scene::Layer::Mesh);
     QVERIFY(shown);

@@ -227,9 +227,14 @@ class GuiTest : public QObject {
 
     // Open mesh: the exported map PLY (world frame) shows in the mesh layer.
     w.choose_open_path = [&](const QString&, const QString&, const QString&) { return dir_.filePath("map.ply"); };
-    w.findChild<QAction*>("openMesh")->trigger();
+    QSignalSpy opened(&w, &MainWindow::meshOpened);
+    w.findChild<QAction*>("openMesh")->trigger();  // read on the background job
+    QVERIFY(opened.wait(20000));
+    QCOMPARE(opened.takeFirst().at(0).toBool(), true);
     QCOMPARE(w.view3d()->scene().layer_size(tunnelmap::scene::Layer::Mesh), vtkIdType(map.value("face")));
-    QVERIFY(!w.open_mesh(dir_.filePath("results.csv")));  // not a PLY: error names the file
+    QVERIFY(w.open_mesh(dir_.filePath("results.csv")));  // started; not a PLY: error names the file
+    QVERIFY(opened.wait(20000));
+    QCOMPARE(opened.takeFirst().at(0).toBool(), false);
     QVERIFY(w.last_error().contains("results.csv"));
   }
 

@@ -178,7 +178,49 @@ TEST_F(SparseWalk, IncrementalMeshingRedoesOnlyTheChangedChunks) {
   EXPECT_LT(second, all);
   // The kept and the re-extracted chunks together are the mesh extracted from scratch.
   const TriangleMesh inc = mesher.mesh(), full = extract_mesh(v, o.min_weight);
-  EXPECT_EQ(inc.vertices.size(), full.vertices.size());
-  EXPECT_EQ(inc.triangles.size(), full.triangles.size());
+  ASSERT_EQ(inc.vertices.size(), full.vertices.size());
+  ASSERT_EQ(inc.triangles.size(), full.triangles.size());
+  // The same surface: the chunks are joined in the same order, so vertex for vertex.
+  for (std::size_t i = 0; i < full.vertices.size(); ++i) ASSERT_EQ(inc.vertices[i], full.vertices[i]) << i;
+  EXPECT_EQ(inc.triangles, full.triangles);
   EXPECT_EQ(mesher.update(v), 0u);  // nothing new
 }
+
+TEST_F(SparseWalk, ReleasingExtractionGivesTheSameMeshAndFreesTheVolume) {
+  Parameters p;
+  p.set("fusion.voxel_mm", 10.0);
+  const FusionOptions o = fusion_options(p);
+  SparseTsdfVolume v(o.voxel_m, options_10mm(o));
+  for (std::size_t i = 0; i < walk->frames.size(); ++i) v.integrate(walk->load_frame(i), pose(i));
+  const TriangleMesh full = extract_mesh(v, o.min_weight);
+  const std::size_t blocks = v.block_count();
+  const TriangleMesh swept = extract_mesh_releasing(v, o.min_weight);
+  std::printf("releasing extraction: %zu vertices, %zu triangles from %zu blocks\n", swept.vertices.size(),
+              swept.triangles.size(), blocks);
+  EXPECT_EQ(v.block_count(), 0u);
+  EXPECT_EQ(v.find(Eigen::Vector3i::Zero()), nullptr);
+  // The walk runs along x: the sweep visits the chunks in the same order, so the same mesh.
+  ASSERT_EQ(swept.vertices.size(), full.vertices.size());
+  ASSERT_EQ(swept.triangles.size(), full.triangles.size());
+  for (std::size_t i = 0; i < full.vertices.size(); ++i) ASSERT_EQ(swept.vertices[i], full.vertices[i]) << i;
+  EXPECT_EQ(swept.triangles, full.triangles);
+}
+
+TEST(SparseTsdf, ReleasedBlocksAreGoneAndTheOthersStayFindable) {
+  FusionOptions o;
+  SparseTsdfVolume v(0.01, tsdf_options(o));
+  v.integrate(flat_wall(1.0), Eigen::Isometry3d::Identity());
+  const std::size_t before = v.block_count();
+  std::size_t below = 0;
+  for (const auto& b : v.blocks()) below += b->coords.x() < 0;
+  ASSERT_GT(below, 0u);
+  ASSERT_LT(below, before);
+  EXPECT_EQ(v.release_blocks_below(0, 0), below);
+  EXPECT_EQ(v.block_count(), before - below);
+  for (const auto& b : v.blocks()) {
+    EXPECT_GE(b->coords.x(), 0);
+    EXPECT_EQ(v.find(b->coords), b.get());
+  }
+  EXPECT_EQ(v.find(Eigen::Vector3i(-1, 0, 12)), nullptr);
+}
+
