@@ -172,6 +172,7 @@ std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::
     if (opt.note && ex.depth_out_of_range)
       opt.note(path + ": " + std::to_string(ex.depth_out_of_range) + " depth pixels beyond 65.535 m read as no measurement");
     Dataset ds = read_dataset(dir.string());
+    ds.max_image_pixels = opt.max_image_pixels;
     auto source = std::make_unique<ExtractedRecordingSource>(dir, std::move(ds));
     for (const auto& f : source->dataset()->frames) source->sources_.push_back(f.raw.value("source", path));
     return source;

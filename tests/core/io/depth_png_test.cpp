@@ -21,6 +21,8 @@ namespace {
 using testing::IoTempDir;
 using testing::expect_input_error;
 
+constexpr long long kDefaultMaxPixels = input_keys::max_image_pixels.default_value;
+
 cv::Mat depth_ramp(int w, int h) {
   cv::Mat img(h, w, CV_16UC1);
   for (int v = 0; v < h; ++v)
@@ -167,13 +169,13 @@ TEST(RgbImage, AcceptsPngAndJpegOnly) {
   for (const char* name : {"c.png", "c.jpg", "c.bmp"}) ASSERT_TRUE(cv::imwrite(tmp.file(name), bgr));
   int w = 0, h = 0;
   for (const char* name : {"c.png", "c.jpg"}) {
-    const auto rgb = read_rgb_image(tmp.file(name), w, h);
+    const auto rgb = read_rgb_image(tmp.file(name), w, h, kDefaultMaxPixels);
     ASSERT_EQ(rgb.size(), 8u * 6u * 3u);
     EXPECT_NEAR(rgb[0], 200, 3) << name;  // red first
     EXPECT_NEAR(rgb[2], 30, 3) << name;
   }
   // OpenCV would decode BMP, TIFF, EXR...: only the formats datasets use are let through.
-  expect_input_error([&] { read_rgb_image(tmp.file("c.bmp"), w, h); }, {"c.bmp", "neither a PNG nor a JPEG"});
+  expect_input_error([&] { read_rgb_image(tmp.file("c.bmp"), w, h, kDefaultMaxPixels); }, {"c.bmp", "neither a PNG nor a JPEG"});
   // A JPEG whose frame header claims 60000x50000 is refused before decoding.
   auto jpeg = testing::read_binary_file(tmp.file("c.jpg"));
   for (std::size_t i = 2; i + 9 < jpeg.size(); ++i)
@@ -183,7 +185,7 @@ TEST(RgbImage, AcceptsPngAndJpegOnly) {
       break;
     }
   testing::write_binary_file(tmp.file("huge.jpg"), jpeg);
-  expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h); }, {"huge.jpg", "absurd image size 60000x50000"});
+  expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h, kDefaultMaxPixels); }, {"huge.jpg", "absurd image size 60000x50000"});
 }
 
 TEST(DepthPng, DecodesFromMemoryLikeFromFile) {
