@@ -7,8 +7,8 @@
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
+#include "core/io/jpeg_decode.h"
 #include "core/io/png_decode.h"
 #include "core/util/error.h"
 
@@ -40,7 +40,7 @@ std::string describe_png_type(const PngHeader& h) {
   return std::to_string(h.bit_depth) + "-bit " + name;
 }
 
-// The size in a JPEG's frame header (SOFn), read before OpenCV allocates anything: walk the
+// The size in a JPEG's frame header (SOFn), read before libjpeg allocates anything: walk the
 // marker segments up to the first SOFn; InputError if there is none before the scan.
 void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path, long long max_pixels) {
   std::size_t pos = 2;  // after SOI (FF D8)
@@ -180,20 +180,7 @@ std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& byte
     return decode_png_rgb8(bytes, path, width, height);
   }
   check_jpeg_size(bytes, path, max_pixels);
-  const cv::Mat img = decode(bytes, path);
-  if (img.type() != CV_8UC3)
-    throw InputError(path, "RGB images must be 8-bit 3-channel colour");
-  if (img.cols > kMaxImageSide || img.rows > kMaxImageSide)
-    throw InputError(path, "absurd image size");
-  cv::Mat rgb;
-  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);  // OpenCV decodes to BGR
-  width = rgb.cols;
-  height = rgb.rows;
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(width) * height * 3);
-  for (int v = 0; v < height; ++v)
-    std::memcpy(out.data() + static_cast<std::size_t>(v) * width * 3, rgb.ptr(v),
-                static_cast<std::size_t>(width) * 3);
-  return out;
+  return decode_jpeg_rgb8(bytes, path, max_pixels, width, height);
 }
 
 std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height, long long max_pixels) {

@@ -188,6 +188,37 @@ TEST(RgbImage, AcceptsPngAndJpegOnly) {
   expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h, kDefaultMaxPixels); }, {"huge.jpg", "absurd image size 60000x50000"});
 }
 
+// libjpeg called directly decodes what OpenCV's decoder (the same libjpeg) gave, pixel for pixel.
+TEST(RgbImage, JpegDecodesAsOpenCvDecodesIt) {
+  IoTempDir tmp;
+  cv::Mat bgr(48, 64, CV_8UC3);
+  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(255));
+  ASSERT_TRUE(cv::imwrite(tmp.file("r.jpg"), bgr));
+  const cv::Mat expected = cv::imread(tmp.file("r.jpg"), cv::IMREAD_COLOR);
+  int w = 0, h = 0;
+  const auto rgb = read_rgb_image(tmp.file("r.jpg"), w, h, kDefaultMaxPixels);
+  ASSERT_EQ(w, 64);
+  ASSERT_EQ(h, 48);
+  int differing = 0;
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u)
+      for (int c = 0; c < 3; ++c)
+        differing += rgb[(static_cast<std::size_t>(v) * w + u) * 3 + c] != expected.at<cv::Vec3b>(v, u)[2 - c];
+  EXPECT_EQ(differing, 0);
+}
+
+TEST(RgbImage, AGreyJpegAndOneOverThePixelLimitAreRefused) {
+  IoTempDir tmp;
+  ASSERT_TRUE(cv::imwrite(tmp.file("g.jpg"), cv::Mat(6, 8, CV_8UC1, cv::Scalar(90))));
+  ASSERT_TRUE(cv::imwrite(tmp.file("c.jpg"), cv::Mat(6, 8, CV_8UC3, cv::Scalar(1, 2, 3))));
+  int w = 0, h = 0;
+  expect_input_error([&] { read_rgb_image(tmp.file("g.jpg"), w, h, kDefaultMaxPixels); },
+                     {"g.jpg", "RGB images must be 8-bit 3-channel colour (a 1-component JPEG)"});
+  expect_input_error([&] { read_rgb_image(tmp.file("c.jpg"), w, h, 47); },
+                     {"c.jpg", "image of 8x6 pixels is too large (at most 47 = 0.0 Mpx, input.max_image_pixels)"});
+  EXPECT_EQ(read_rgb_image(tmp.file("c.jpg"), w, h, 48).size(), 8u * 6u * 3u);
+}
+
 TEST(DepthPng, DecodesFromMemoryLikeFromFile) {
   IoTempDir tmp;
   const std::string path = tmp.file("d.png");
