@@ -70,6 +70,33 @@ TEST_F(InputLimits, AHugeImageIsRefusedBeforeDecoding) {
   EXPECT_LT(o.max_rss_kb, 300 * 1024) << "peak RSS: decoded anyway?";
 }
 
+// Sparse: 257 MB on paper, a few kilobytes on disk; refused from its size, before parsing.
+TEST_F(InputLimits, AJsonFileOver256MbIsRefused) {
+  const std::string text = read_file(index());
+  write_file(index(), text);
+  fs::resize_file(index(), 257ull << 20);
+  const Outcome o = detect();
+  EXPECT_TRUE(exits_with_one_line(o, 3, index().string()));
+  EXPECT_NE(o.err.find("too large"), std::string::npos) << o.err;
+  EXPECT_LT(o.max_rss_kb, 300 * 1024) << "peak RSS: read anyway?";
+}
+
+TEST_F(InputLimits, AnAbsurdTumGroundTruthPoseIsRefused) {
+  const fs::path tum = dir() / "tum";
+  ASSERT_EQ(run_cli({"convert", ds(), tum.string(), "--to", "tum", "-q"}).exit_code, 0);
+  const fs::path gt = tum / "groundtruth.txt";
+  std::string text = read_file(gt);
+  // The first pose line's tx (the field after the timestamp) becomes 1e308 m.
+  std::size_t line = 0;
+  while (text[line] == '#') line = text.find('\n', line) + 1;
+  const std::size_t tx = text.find(' ', line) + 1, end = text.find(' ', tx);
+  text.replace(tx, end - tx, "1e308");
+  write_file(gt, text);
+  const Outcome o = run_cli({"detect", tum.string(), "-q"});
+  EXPECT_TRUE(exits_with_one_line(o, 3, gt.string()));
+  EXPECT_NE(o.err.find("out of range"), std::string::npos) << o.err;
+}
+
 // The limit is the parameter input.max_image_pixels: 8192 x 8192 is over its default.
 TEST_F(InputLimits, TheDefaultPixelLimitRefusesAn8192By8192Image) {
   const fs::path png = dir() / "bomb.png";

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "tests/hostile/hostile_checks.h"
@@ -92,6 +94,18 @@ TEST_F(Messages, AnIntactJpegColourDatasetIsRead) {
   const Outcome o = run_cli({"detect", ds.string(), "-q"});
   EXPECT_EQ(o.exit_code, 0) << o.err;
   EXPECT_TRUE(o.err.empty()) << o.err;
+}
+
+// Frames with no depth at all: nothing to fuse is a data problem naming the input, not a crash
+// or an empty mesh.
+TEST_F(Messages, FusingFramesWithNoDepthInRangeIsADataProblem) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir() / "ds" / "depth"))
+    ASSERT_TRUE(cv::imwrite(entry.path().string(), cv::Mat::zeros(480, 640, CV_16UC1)));
+  const std::filesystem::path mesh = dir() / "mesh.ply";
+  const Outcome o = run_cli({"fuse", ds(), "--quiet", "--mesh", mesh.string()});
+  EXPECT_TRUE(exits_with_one_line(o, 3, ds()));
+  EXPECT_NE(o.err.find("no depth within"), std::string::npos) << o.err;
+  EXPECT_FALSE(std::filesystem::exists(mesh));
 }
 
 // The summary line of `detect` (stdout's last line).
