@@ -8,7 +8,7 @@ PACKAGES=(
   qtbase5-dev libqt5opengl5-dev
   libvtk9-dev libvtk9-qt-dev
   libpcl-dev libeigen3-dev libqhull-dev libceres-dev
-  libopencv-dev libopencv-contrib-dev
+  libopencv-dev libopencv-contrib-dev libpng-dev libjpeg62-turbo-dev
   libopenni2-dev openni2-utils
   libosmesa6-dev
   libgtest-dev libgmock-dev libbenchmark-dev

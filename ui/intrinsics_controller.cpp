@@ -12,8 +12,10 @@
 #include <QSettings>
 #include <QUrl>
 
+#include "core/io/input_options.h"
 #include "core/io/png_folder.h"
 #include "ui/frame_controller.h"
+#include "ui/parameter_panel.h"
 #include "ui/review_session.h"
 #include "ui/window_context.h"
 #include "ui/window_status.h"
@@ -84,6 +86,7 @@ void IntrinsicsController::add_actions(QMenu* file) {
 
 ReadOptions IntrinsicsController::read_options_for(const QString& input) const {
   ReadOptions opt;
+  if (ctx_.params) opt.max_image_pixels = input_limit_options(ctx_.params->parameters()).max_image_pixels;
   if (input.isEmpty()) return opt;
   const auto it = given_.find(absolute(input));
   if (it != given_.end()) {

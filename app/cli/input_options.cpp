@@ -108,6 +108,7 @@ ReadOptions InputOptions::read_options() const {
   }
   r.note = [](const std::string& line) { std::fprintf(stderr, "tunnelmap-cli: note: %s\n", line.c_str()); };
   r.recording = recording;
+  r.max_image_pixels = input_limit_options(parameters()).max_image_pixels;
   return r;
 }
 

@@ -208,6 +208,7 @@ Dataset read_dataset(const std::string& dir_or_json_path, const ReadOptions& opt
   Dataset d = is_tum_sequence(dir_or_json_path) ? read_tum_sequence(dir_or_json_path, opt)
                                                 : read_dataset_json(dir_or_json_path);
   if (opt.world_up) d.up = opt.world_up->normalized();
+  d.max_image_pixels = opt.max_image_pixels;
   return d;
 }
 
@@ -229,6 +230,7 @@ DepthFrame Dataset::load_frame(std::size_t i) const {
   ReadOptions opt;
   opt.depth_units_per_m = depth_scale;
   opt.intrinsics = intrinsics;
+  opt.max_image_pixels = max_image_pixels;
   DepthFrame f;
   try {
     f = read_depth_png(ref.depth_path, opt);
@@ -242,7 +244,7 @@ DepthFrame Dataset::load_frame(std::size_t i) const {
   if (!ref.rgb_path.empty()) {
     int w = 0, h = 0;
     try {
-      f.rgb = read_rgb_image(ref.rgb_path, w, h);
+      f.rgb = read_rgb_image(ref.rgb_path, w, h, max_image_pixels);
     } catch (const InputError& e) {
       fail(ref.rgb_origin, "rgb", e.what());
     }
@@ -267,7 +269,7 @@ std::vector<std::uint16_t> Dataset::load_gt_surfaces(std::size_t i) const {
   int w = 0, h = 0;
   std::vector<std::uint16_t> labels;
   try {
-    labels = read_label_png(ref.gt_path, w, h);
+    labels = read_label_png(ref.gt_path, w, h, max_image_pixels);
   } catch (const InputError& e) {
     throw InputError(json_path, "key '" + key + "': " + e.what());
   }

@@ -48,6 +48,7 @@ struct Dataset {
   std::optional<double> gt_width_m, gt_height_m;
   nlohmann::json robot, ground_truth, raw;     // null when absent
   UnmatchedFrames unmatched;                   // TUM sequences only
+  long long max_image_pixels = input_keys::max_image_pixels.default_value;  // from ReadOptions
 
   // Depth + rgb (if any; must match the size) + pose + joints, validated. InputError naming
   // dataset.json and the frame index on any problem.

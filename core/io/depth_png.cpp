@@ -1,14 +1,14 @@
 #include "core/io/depth_png.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
-#include "core/io/input_limits.h"
+#include "core/io/jpeg_decode.h"
 #include "core/io/png_decode.h"
 #include "core/util/error.h"
 
@@ -18,10 +18,12 @@ namespace fs = std::filesystem;
 namespace {
 
 // Before decoding: a small file can claim a frame that takes gigabytes once decoded.
-void check_image_pixels(const std::string& path, int w, int h) {
-  if (static_cast<long long>(w) * h <= kMaxImagePixels) return;
-  throw InputError(path, "image of " + std::to_string(w) + "x" + std::to_string(h) +
-                             " pixels is too large (at most 4096x4096 = 16.8 Mpx)");
+void check_image_pixels(const std::string& path, int w, int h, long long max_pixels) {
+  if (static_cast<long long>(w) * h <= max_pixels) return;
+  char mpx[32];
+  std::snprintf(mpx, sizeof mpx, "%.1f", static_cast<double>(max_pixels) / 1e6);
+  throw InputError(path, "image of " + std::to_string(w) + "x" + std::to_string(h) + " pixels is too large (at most " +
+                             std::to_string(max_pixels) + " = " + mpx + " Mpx, input.max_image_pixels)");
 }
 
 constexpr std::size_t kMaxImageFileBytes = 512u << 20;
@@ -38,9 +40,9 @@ std::string describe_png_type(const PngHeader& h) {
   return std::to_string(h.bit_depth) + "-bit " + name;
 }
 
-// The size in a JPEG's frame header (SOFn), read before OpenCV allocates anything: walk the
+// The size in a JPEG's frame header (SOFn), read before libjpeg allocates anything: walk the
 // marker segments up to the first SOFn; InputError if there is none before the scan.
-void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path) {
+void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path, long long max_pixels) {
   std::size_t pos = 2;  // after SOI (FF D8)
   while (pos + 4 <= b.size()) {
     if (b[pos] != 0xff) break;
@@ -62,7 +64,7 @@ void check_jpeg_size(const std::vector<std::uint8_t>& b, const std::string& path
       if (w == 0 || h == 0 || w > kMaxImageSide || h > kMaxImageSide)
         throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
                                    " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
-      check_image_pixels(path, w, h);
+      check_image_pixels(path, w, h, max_pixels);
       return;
     }
     if (length < 2) break;
@@ -117,7 +119,7 @@ std::vector<std::uint8_t> read_file_bytes(const std::string& path, std::size_t m
   return bytes;
 }
 
-PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::string& path, long long max_pixels) {
   // Signature (8) + IHDR length (4) + "IHDR" (4) + width (4) + height (4) + depth + colour type.
   if (bytes.size() < 26 || std::memcmp(bytes.data(), kPngSignature, 8) != 0)
     throw InputError(path, "is not a PNG file");
@@ -128,7 +130,7 @@ PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::st
   if (w == 0 || h == 0 || w > std::uint32_t(kMaxImageSide) || h > std::uint32_t(kMaxImageSide))
     throw InputError(path, "absurd image size " + std::to_string(w) + "x" + std::to_string(h) +
                                " (each side must be 1.." + std::to_string(kMaxImageSide) + ")");
-  check_image_pixels(path, static_cast<int>(w), static_cast<int>(h));
+  check_image_pixels(path, static_cast<int>(w), static_cast<int>(h), max_pixels);
   PngHeader header;
   header.width = static_cast<int>(w);
   header.height = static_cast<int>(h);
@@ -143,7 +145,7 @@ DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt) {
 
 DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
                             const ReadOptions& opt) {
-  const PngHeader header = parse_png_header(bytes, path);
+  const PngHeader header = parse_png_header(bytes, path, opt.max_image_pixels);
   if (header.bit_depth != 16 || header.colour_type != 0)
     throw InputError(path, std::string(header.bit_depth == 8 ? "is an " : "is a ") +
                                describe_png_type(header) +
@@ -160,47 +162,34 @@ DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::s
   return f;
 }
 
-std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height) {
-  return decode_rgb_image(read_file_bytes(path, kMaxImageFileBytes), path, width, height);
+std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height, long long max_pixels) {
+  return decode_rgb_image(read_file_bytes(path, kMaxImageFileBytes), path, width, height, max_pixels);
 }
 
 std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& bytes, const std::string& path,
-                                           int& width, int& height) {
+                                           int& width, int& height, long long max_pixels) {
   const bool is_png = bytes.size() >= 8 && std::memcmp(bytes.data(), kPngSignature, 8) == 0;
   const bool is_jpeg = bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
   // Only the two formats datasets use: OpenCV's other decoders (TIFF, EXR, ...) stay unreachable.
   if (!is_png && !is_jpeg) throw InputError(path, "is neither a PNG nor a JPEG image");
   if (is_png) {
-    const PngHeader header = parse_png_header(bytes, path);
+    const PngHeader header = parse_png_header(bytes, path, max_pixels);
     const bool rgb = (header.colour_type == 2 && header.bit_depth == 8) || header.colour_type == 3;  // or a palette
     if (!rgb) throw InputError(path, "RGB images must be 8-bit 3-channel colour (" + describe_png_type(header) + ")");
     require_png_end(bytes, path);
     return decode_png_rgb8(bytes, path, width, height);
   }
-  check_jpeg_size(bytes, path);
-  const cv::Mat img = decode(bytes, path);
-  if (img.type() != CV_8UC3)
-    throw InputError(path, "RGB images must be 8-bit 3-channel colour");
-  if (img.cols > kMaxImageSide || img.rows > kMaxImageSide)
-    throw InputError(path, "absurd image size");
-  cv::Mat rgb;
-  cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB);  // OpenCV decodes to BGR
-  width = rgb.cols;
-  height = rgb.rows;
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(width) * height * 3);
-  for (int v = 0; v < height; ++v)
-    std::memcpy(out.data() + static_cast<std::size_t>(v) * width * 3, rgb.ptr(v),
-                static_cast<std::size_t>(width) * 3);
-  return out;
+  check_jpeg_size(bytes, path, max_pixels);
+  return decode_jpeg_rgb8(bytes, path, max_pixels, width, height);
 }
 
-std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height) {
-  return decode_label_png(read_file_bytes(path, kMaxImageFileBytes), path, width, height);
+std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height, long long max_pixels) {
+  return decode_label_png(read_file_bytes(path, kMaxImageFileBytes), path, width, height, max_pixels);
 }
 
 std::vector<std::uint16_t> decode_label_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
-                                            int& width, int& height) {
-  const PngHeader header = parse_png_header(bytes, path);
+                                            int& width, int& height, long long max_pixels) {
+  const PngHeader header = parse_png_header(bytes, path, max_pixels);
   require_png_end(bytes, path);
   const cv::Mat img = decode(bytes, path);
   if (img.channels() != 1)

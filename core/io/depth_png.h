@@ -20,8 +20,9 @@ struct PngHeader {
 };
 
 // Parses the signature and IHDR chunk of an in-memory PNG; throws InputError (naming `path`)
-// if it is not a PNG or its dimensions are 0 or larger than kMaxImageSide.
-PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::string& path);
+// if it is not a PNG, a side is 0 or larger than kMaxImageSide, or it has more than
+// `max_pixels` pixels (ReadOptions::max_image_pixels).
+PngHeader parse_png_header(const std::vector<std::uint8_t>& bytes, const std::string& path, long long max_pixels);
 
 // Reads a whole file into memory; throws InputError if missing, unreadable or over `max_bytes`.
 std::vector<std::uint8_t> read_file_bytes(const std::string& path, std::size_t max_bytes);
@@ -34,14 +35,15 @@ DepthFrame read_depth_png(const std::string& path, const ReadOptions& opt);
 DepthFrame decode_depth_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
                             const ReadOptions& opt);
 
-// Reads an 8-bit colour PNG/JPEG as RGB8 row-major; throws InputError otherwise.
-std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height);
+// Reads an 8-bit colour PNG/JPEG as RGB8 row-major; throws InputError otherwise (also for
+// more than `max_pixels` pixels, before decoding).
+std::vector<std::uint8_t> read_rgb_image(const std::string& path, int& width, int& height, long long max_pixels);
 std::vector<std::uint8_t> decode_rgb_image(const std::vector<std::uint8_t>& bytes, const std::string& path,
-                                           int& width, int& height);
+                                           int& width, int& height, long long max_pixels);
 
 // Reads a 16-bit single-channel label PNG (e.g. ground-truth surface ids).
-std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height);
+std::vector<std::uint16_t> read_label_png(const std::string& path, int& width, int& height, long long max_pixels);
 std::vector<std::uint16_t> decode_label_png(const std::vector<std::uint8_t>& bytes, const std::string& path,
-                                            int& width, int& height);
+                                            int& width, int& height, long long max_pixels);
 
 }  // namespace tunnelmap

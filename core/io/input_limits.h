@@ -14,8 +14,7 @@ inline constexpr const char* kMaxPoseTranslationText = "1e5 m";
 // index memory, so the bound keeps a dataset's index near 100 MB.
 constexpr std::size_t kMaxDatasetFrames = 100000;
 
-// Pixels in one image, checked from the header before decoding: 4096 x 4096, four times the
-// largest depth camera's frame; an 8192 x 8192 frame would take over 2 GB through the pipeline.
-constexpr long long kMaxImagePixels = 4096LL * 4096LL;
+// Pixels in one image: a parameter, input.max_image_pixels (core/io/input_options.h), which
+// the readers take as ReadOptions::max_image_pixels.
 
 }  // namespace tunnelmap

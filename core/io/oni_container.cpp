@@ -5,7 +5,6 @@
 #include <map>
 #include <vector>
 
-#include "core/io/input_limits.h"
 #include "core/io/oni_bytes.h"
 #include "core/io/oni_payload.h"
 #include "core/util/error.h"
@@ -133,7 +132,8 @@ std::uint32_t bytes_per_pixel(const Node& n) {
 
 class RecordingCheck {
  public:
-  RecordingCheck(const Bytes& bytes, std::string name) : bytes_(bytes), name_(std::move(name)) {}
+  RecordingCheck(const Bytes& bytes, std::string name, long long max_pixels)
+      : bytes_(bytes), name_(std::move(name)), max_pixels_(max_pixels) {}
 
   void run() {
     check_file_header();
@@ -328,7 +328,7 @@ class RecordingCheck {
     if (n.cropped) fail_at(h, what + ": cropped streams are not supported");
     const std::uint64_t pixels = static_cast<std::uint64_t>(s.width) * s.height;
     const std::uint64_t bytes = pixels * s.bytes_per_pixel;
-    if (static_cast<long long>(pixels) > kMaxImagePixels || bytes > kMaxFrameBytes)
+    if (static_cast<long long>(pixels) > max_pixels_ || bytes > kMaxFrameBytes)
       fail_at(h, what + ": absurd resolution " + std::to_string(s.width) + "x" + std::to_string(s.height));
     if (n.required_frame_bytes != 0 && n.required_frame_bytes != bytes)
       fail_at(h, what + ": the stream's frame size " + std::to_string(n.required_frame_bytes) + " bytes does not match " +
@@ -364,6 +364,7 @@ class RecordingCheck {
 
   const Bytes& bytes_;
   std::string name_;
+  long long max_pixels_;
   std::vector<std::uint8_t> buf_, fields_;
   std::uint64_t max_timestamp_ = 0;
   std::uint32_t max_node_id_ = 0;
@@ -376,14 +377,14 @@ class RecordingCheck {
 
 }  // namespace
 
-void check_recording_file(const std::string& path) {
+void check_recording_file(const std::string& path, long long max_pixels) {
   const FileBytes bytes(path);
-  RecordingCheck(bytes, path).run();
+  RecordingCheck(bytes, path, max_pixels).run();
 }
 
-void check_recording(const std::uint8_t* data, std::size_t size, const std::string& name) {
+void check_recording(const std::uint8_t* data, std::size_t size, const std::string& name, long long max_pixels) {
   const MemoryBytes bytes(data, size);
-  RecordingCheck(bytes, name).run();
+  RecordingCheck(bytes, name, max_pixels).run();
 }
 
 }  // namespace tunnelmap::oni

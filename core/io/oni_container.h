@@ -12,10 +12,11 @@
 
 namespace tunnelmap::oni {
 
-// InputError(path, reason) unless the recording at `path` passes.
-void check_recording_file(const std::string& path);
+// InputError(path, reason) unless the recording at `path` passes; a stream's frames may have
+// at most `max_pixels` pixels (ReadOptions::max_image_pixels).
+void check_recording_file(const std::string& path, long long max_pixels);
 
 // The same check on a recording in memory; `name` is the file the error names.
-void check_recording(const std::uint8_t* data, std::size_t size, const std::string& name);
+void check_recording(const std::uint8_t* data, std::size_t size, const std::string& name, long long max_pixels);
 
 }  // namespace tunnelmap::oni

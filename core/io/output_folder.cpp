@@ -74,9 +74,10 @@ StagedFolder::StagedFolder(const std::string& target) {
   }
   created_ = first_missing_folder(target_.parent_path());
   staging_ = sibling_name(target_, ".", ".tmp-" + unique_suffix(), false);
-  TempRegistry::add(created_.empty() ? staging_ : created_);  // before it exists: no window
-  make_folder(target_.parent_path());
-  make_folder(staging_);
+  TempRegistry::create(created_.empty() ? staging_ : created_, [&] {
+    make_folder(target_.parent_path());
+    make_folder(staging_);
+  });
 }
 
 StagedFolder::~StagedFolder() {

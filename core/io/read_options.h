@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/frame/intrinsics.h"
+#include "core/io/input_options.h"
 #include "core/recordings/recording_options.h"
 
 namespace tunnelmap {
@@ -22,6 +23,8 @@ struct ReadOptions {
   std::function<void(const std::string&)> note;
   // Robot recordings (ROS bags): topics, world frame and time window (core/recordings).
   recordings::RecordingOptions recording;
+  // Images with more pixels are refused from their header, before decoding (input.max_image_pixels).
+  long long max_image_pixels = input_keys::max_image_pixels.default_value;
 };
 
 // PrimeSense VGA intrinsics scaled to an image of the given size (used when none are given).

@@ -48,7 +48,7 @@ Intrinsics choose_intrinsics(const fs::path& root, const std::string& depth_list
                              const ReadOptions& opt) {
   if (opt.intrinsics) {
     // The size comes from the images, as for a single depth PNG.
-    const PngHeader h = parse_png_header(read_file_bytes(first_depth, 64u << 20), first_depth);
+    const PngHeader h = parse_png_header(read_file_bytes(first_depth, 64u << 20), first_depth, opt.max_image_pixels);
     return intrinsics_for_image(opt, h.width, h.height);
   }
   if (sidecar.intrinsics) return *sidecar.intrinsics;

@@ -2,6 +2,7 @@
 
 #include "core/baselines/baseline_options.h"
 #include "core/fusion/fusion_options.h"
+#include "core/io/input_options.h"
 #include "core/mapping/map_options.h"
 #include "core/mapping/slam_options.h"
 #include "core/normals/cloud_options.h"
@@ -26,10 +27,10 @@ const char* stage_name(Stage s) {
 
 namespace {
 
-// The modules in the order `params`, presets and the GUI panel show them (the pipeline's order,
-// then the whole-tunnel map, fusion and the baselines).
+// The modules in the order `params`, presets and the GUI panel show them (the readers, the
+// pipeline's order, then the whole-tunnel map, fusion and the baselines).
 const std::vector<ParameterGroup>& groups() {
-  static const std::vector<ParameterGroup> all = {cloud_parameter_group(), normal_parameter_group(), grow_parameter_group(),
+  static const std::vector<ParameterGroup> all = {input_parameter_group(), cloud_parameter_group(), normal_parameter_group(), grow_parameter_group(),
                                                   tunnel_parameter_group(), map_parameter_group(),    slam_parameter_group(),
                                                   fusion_parameter_group(),
                                                   baseline_parameter_group()};

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -92,10 +93,21 @@ class ExtractedRecordingSource : public FrameSource {
   Dataset ds_;
 };
 
+// A new folder (never an existing one), registered as it is made: removed on SIGINT/SIGTERM too.
 fs::path make_temp_folder() {
-  std::string pattern = (fs::temp_directory_path() / "tunnelmap-recording-XXXXXX").string();
-  if (!::mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder");
-  return pattern;
+  static std::atomic<unsigned> made{0};
+  const fs::path dir = fs::temp_directory_path() /
+                       ("tunnelmap-recording-" + std::to_string(::getpid()) + "-" + std::to_string(made++));
+  try {
+    TempRegistry::create(dir, [&] {
+      std::error_code ec;
+      if (!fs::create_directory(dir, ec) || ec) throw InputError(dir.string(), "cannot create a temporary folder");
+    });
+  } catch (...) {
+    TempRegistry::remove(dir);
+    throw;
+  }
+  return dir;
 }
 
 }  // namespace
@@ -154,13 +166,13 @@ std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::
                                                const std::function<void(std::size_t)>& progress) {
   const RecordingFrames frames(rec, opt.recording, opt);
   const fs::path dir = make_temp_folder();
-  TempRegistry::add(dir);  // removed on SIGINT/SIGTERM too
   try {
     const Eigen::Vector3d up = opt.world_up ? opt.world_up->normalized() : Eigen::Vector3d::UnitZ();
     const RecordingExport ex = write_recording_dataset(frames, path, dir, up, progress);
     if (opt.note && ex.depth_out_of_range)
       opt.note(path + ": " + std::to_string(ex.depth_out_of_range) + " depth pixels beyond 65.535 m read as no measurement");
     Dataset ds = read_dataset(dir.string());
+    ds.max_image_pixels = opt.max_image_pixels;
     auto source = std::make_unique<ExtractedRecordingSource>(dir, std::move(ds));
     for (const auto& f : source->dataset()->frames) source->sources_.push_back(f.raw.value("source", path));
     return source;

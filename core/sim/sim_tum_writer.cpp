@@ -24,7 +24,7 @@ struct ScratchDataset {
     dir = out.parent_path() / ("." + out.filename().string() + ".sim-" + std::to_string(::getpid()));
     std::error_code ec;
     fs::remove_all(dir, ec);
-    TempRegistry::add(dir);
+    TempRegistry::create(dir, [] {});  // made by the dataset writer, from a registered staging folder
   }
   ~ScratchDataset() {
     std::error_code ec;

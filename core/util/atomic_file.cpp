@@ -27,9 +27,8 @@ void write_path_atomically(const std::string& path,
   check_output_path(path);
   const std::string target = output_target(path).string();
   const std::string tmp = temporary_name(target);  // beside the target: rename stays atomic
-  TempRegistry::add(tmp);
   try {
-    write(tmp);
+    TempRegistry::create(tmp, [&] { write(tmp); });
     if (!fs::exists(tmp)) throw InputError(path, "cannot write: the writer produced no file");
     std::error_code ec;
     fs::rename(tmp, target, ec);

@@ -4,6 +4,7 @@
 #include <spawn.h>
 #include <unistd.h>
 
+#include <condition_variable>
 #include <cstdio>
 #include <mutex>
 #include <set>
@@ -25,6 +26,19 @@ std::multiset<fs::path>& live_paths() {
   return paths;
 }
 
+// Creations in progress (registered, `make` still running), the cleanup's wait for them, and
+// whether an interrupt has come. Guarded by registry_mutex().
+struct Creations {
+  int running = 0;
+  bool interrupted = false;
+  std::condition_variable done;
+};
+Creations& creations() {
+  static Creations c;
+  return c;
+}
+thread_local int creating_depth = 0;  // this thread is inside `make` (a nested creation goes on)
+
 sigset_t interrupt_signals() {
   sigset_t set;
   sigemptyset(&set);
@@ -34,14 +48,19 @@ sigset_t interrupt_signals() {
 }
 
 [[noreturn]] void clean_up_and_exit(int signal, const std::string& program) {
-  // Holding the lock until _exit: no other thread can register (and then create) a new
-  // temporary after the sweep.
-  registry_mutex().lock();
+  // First every creation in progress finishes (its path then exists and is registered); new
+  // ones wait. Then the lock is held until _exit: no other thread can register (and then
+  // create) a new temporary after the sweep.
+  std::unique_lock<std::mutex> lock(registry_mutex());
+  Creations& c = creations();
+  c.interrupted = true;
+  c.done.wait(lock, [&] { return c.running == 0; });
   for (const fs::path& p : live_paths()) {
-    // Other threads still run: a file written into a folder while it is being emptied makes
-    // the first attempt fail ("not empty"); the second finds the folder quiet.
+    // Other threads still run: a file they finish writing into a folder while it is being
+    // emptied makes an attempt fail ("not empty"); each then waits at the registry.
     std::error_code ec;
-    if (fs::remove_all(p, ec) == static_cast<std::uintmax_t>(-1) || ec) fs::remove_all(p, ec);
+    for (int attempt = 0; attempt < 10; ++attempt)
+      if (fs::remove_all(p, ec) != static_cast<std::uintmax_t>(-1) && !ec) break;
   }
   std::fprintf(stderr, "%s: interrupted by %s; temporary files removed, earlier outputs kept\n", program.c_str(),
                signal == SIGINT ? "SIGINT" : "SIGTERM");
@@ -51,9 +70,28 @@ sigset_t interrupt_signals() {
 
 }  // namespace
 
-void TempRegistry::add(const fs::path& path) {
-  const std::lock_guard<std::mutex> lock(registry_mutex());
-  live_paths().insert(fs::absolute(path));
+void TempRegistry::create(const fs::path& path, const std::function<void()>& make) {
+  const fs::path absolute = fs::absolute(path);
+  Creations& c = creations();
+  {
+    std::unique_lock<std::mutex> lock(registry_mutex());
+    // After an interrupt only creations nested in a running one go on (the cleanup waits for
+    // the outer one); any other waits here for the exit.
+    if (creating_depth == 0) c.done.wait(lock, [&] { return !c.interrupted; });
+    live_paths().insert(absolute);
+    ++c.running;
+  }
+  struct Finish {
+    Creations& c;
+    ~Finish() {
+      --creating_depth;
+      const std::lock_guard<std::mutex> lock(registry_mutex());
+      if (--c.running == 0) c.done.notify_all();
+    }
+  };
+  ++creating_depth;
+  const Finish finish{c};
+  make();
 }
 
 void TempRegistry::remove(const fs::path& path) {

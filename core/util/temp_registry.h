@@ -10,12 +10,17 @@
 #include <spawn.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace tunnelmap {
 
 namespace TempRegistry {
-void add(const std::filesystem::path& path);     // call before creating it
+// Registers `path` and runs `make`, which creates it (and may write it whole). An interrupt
+// waits until `make` returns: the cleanup never runs between the registration and the
+// creation, which would let the path appear after the cleanup. Once an interrupt has come,
+// a new creation (outside a running `make`) waits for the exit instead of starting.
+void create(const std::filesystem::path& path, const std::function<void()>& make);
 void remove(const std::filesystem::path& path);  // call once it is renamed into place or deleted
 }  // namespace TempRegistry
 

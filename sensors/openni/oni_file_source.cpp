@@ -42,7 +42,7 @@ OniFileSource::OniFileSource(std::string path, ReadOptions opt) : path_(std::mov
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path_, ec)) throw InputError(path_, "not found");
   // OpenNI's player trusts the file and can crash or hang the process on a damaged one.
-  oni::check_recording_file(path_);
+  oni::check_recording_file(path_, opt.max_image_pixels);
   ensure_initialized();
   player_ = open_player();
   count_ = static_cast<std::size_t>(player_->frames);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/io/depth_png.h"
+#include "core/io/input_options.h"
 #include "core/util/error.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -19,12 +20,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   int w = 0, h = 0;
   try {
-    const auto rgb = decode_rgb_image(bytes, "fuzz.rgb", w, h);
+    const auto rgb = decode_rgb_image(bytes, "fuzz.rgb", w, h, input_keys::max_image_pixels.default_value);
     if (!in_range(w, h) || rgb.size() != static_cast<std::size_t>(w) * h * 3) std::abort();
   } catch (const InputError&) {
   }
   try {
-    const auto labels = decode_label_png(bytes, "fuzz.labels.png", w, h);
+    const auto labels = decode_label_png(bytes, "fuzz.labels.png", w, h, input_keys::max_image_pixels.default_value);
     if (!in_range(w, h) || labels.size() != static_cast<std::size_t>(w) * h) std::abort();
   } catch (const InputError&) {
   }

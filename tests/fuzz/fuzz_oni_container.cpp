@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "core/io/input_options.h"
 #include "core/io/oni_container.h"
 #include "core/io/oni_payload.h"
 #include "core/util/error.h"
@@ -14,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace tunnelmap;
   if (size >= 4 && std::memcmp(data, "NI10", 4) == 0) {
     try {
-      oni::check_recording(data, size, "fuzz.oni");
+      oni::check_recording(data, size, "fuzz.oni", input_keys::max_image_pixels.default_value);
     } catch (const InputError& e) {
       if (e.file() != "fuzz.oni" || std::strchr(e.what(), '\n') != nullptr) std::abort();  // one line naming the file
     }

@@ -1,4 +1,5 @@
-// Folder outputs (simulate, convert, evaluate --out, fuse --refined-dataset) are built beside
+// Folder outputs (simulate, convert, evaluate --out, fuse --refined-dataset and
+// --mesh-per-compartment) are built beside
 // the target and renamed into place; a non-empty folder holding files tunnelmap did not write
 // is refused before any work, and no file the user had is ever deleted.
 #include "tests/hostile/hostile_checks.h"
@@ -68,6 +69,20 @@ TEST_F(FolderOutputs, EvaluateOnABadDatasetLeavesNoFolder) {
   const Outcome o = run_cli({"evaluate", "--dataset", bad.string(), "--out", out.string(), "-q"});
   EXPECT_TRUE(exits_with_one_line(o, 3, bad.string()));
   EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(leftovers(dir()).empty());
+}
+
+// fuse's two folder outputs refuse a folder with the user's files before fusing anything.
+TEST_F(FolderOutputs, FuseRefusesFoldersWithTheUsersFiles) {
+  const fs::path ds = dir() / "ds";
+  copy_small_dataset(ds);
+  for (const std::string flag : {"--refined-dataset", "--mesh-per-compartment"}) {
+    const fs::path folder = users_folder(flag.substr(2));
+    const Outcome o = run_cli({"fuse", ds.string(), "--quiet", flag, folder.string()});
+    EXPECT_TRUE(exits_with_one_line(o, 2, folder.string())) << flag;
+    EXPECT_EQ(read_file(folder / "notes.txt"), "my notes") << flag;
+    EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1) << flag;
+  }
   EXPECT_TRUE(leftovers(dir()).empty());
 }
 

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "tests/hostile/hostile_checks.h"
@@ -50,6 +52,60 @@ TEST_F(Messages, ACorruptPngIsOneLineWithLibpngsReason) {
   EXPECT_TRUE(exits_with_one_line(o, 3, png.string()));
   EXPECT_NE(o.err.find("corrupt PNG: "), std::string::npos) << o.err;
   EXPECT_EQ(o.err.find("libpng"), std::string::npos) << o.err;
+}
+
+// A simulated dataset of two frames with JPEG colour images; returns the second frame's JPEG.
+std::filesystem::path jpeg_dataset(const std::filesystem::path& ds) {
+  const Outcome made = run_cli({"simulate", ds.string(), "--frames", "2", "--rgb-format", "jpg", "--quiet"});
+  EXPECT_EQ(made.exit_code, 0) << made.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(ds / "dataset.json"));
+  return ds / j["frames"][1]["rgb"].get<std::string>();
+}
+
+// libjpeg's own "Premature end of JPEG file" warning used to reach stderr through OpenCV.
+TEST_F(Messages, ATruncatedJpegColourFrameIsOneLineNamingIt) {
+  const std::filesystem::path ds = dir() / "jpeg", jpg = jpeg_dataset(ds);
+  const std::string bytes = read_file(jpg);
+  ASSERT_GT(bytes.size(), 2000u);
+  write_file(jpg, bytes.substr(0, bytes.size() / 2));
+  const Outcome o = run_cli({"detect", ds.string(), "-q", "--json", (dir() / "r.json").string()});
+  EXPECT_TRUE(exits_with_one_line(o, 3, jpg.string()));
+  EXPECT_NE(o.err.find("corrupt JPEG: Premature end of JPEG file"), std::string::npos) << o.err;
+  EXPECT_FALSE(std::filesystem::exists(dir() / "r.json"));
+}
+
+// Bytes between the scan and the end marker: libjpeg's "Corrupt JPEG data: ... extraneous bytes"
+// (the scan decoder takes all but the last as data).
+TEST_F(Messages, ExtraneousBytesInAJpegColourFrameAreOneLineNamingIt) {
+  const std::filesystem::path ds = dir() / "jpeg", jpg = jpeg_dataset(ds);
+  std::string bytes = read_file(jpg);
+  ASSERT_EQ(bytes.substr(bytes.size() - 2), "\xff\xd9");
+  bytes.insert(bytes.size() - 2, "garbage");
+  write_file(jpg, bytes);
+  const Outcome o = run_cli({"detect", ds.string(), "-q"});
+  EXPECT_TRUE(exits_with_one_line(o, 3, jpg.string()));
+  EXPECT_NE(o.err.find("corrupt JPEG: Corrupt JPEG data: 1 extraneous bytes before marker 0xd9"), std::string::npos)
+      << o.err;
+}
+
+TEST_F(Messages, AnIntactJpegColourDatasetIsRead) {
+  const std::filesystem::path ds = dir() / "jpeg";
+  jpeg_dataset(ds);
+  const Outcome o = run_cli({"detect", ds.string(), "-q"});
+  EXPECT_EQ(o.exit_code, 0) << o.err;
+  EXPECT_TRUE(o.err.empty()) << o.err;
+}
+
+// Frames with no depth at all: nothing to fuse is a data problem naming the input, not a crash
+// or an empty mesh.
+TEST_F(Messages, FusingFramesWithNoDepthInRangeIsADataProblem) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir() / "ds" / "depth"))
+    ASSERT_TRUE(cv::imwrite(entry.path().string(), cv::Mat::zeros(480, 640, CV_16UC1)));
+  const std::filesystem::path mesh = dir() / "mesh.ply";
+  const Outcome o = run_cli({"fuse", ds(), "--quiet", "--mesh", mesh.string()});
+  EXPECT_TRUE(exits_with_one_line(o, 3, ds()));
+  EXPECT_NE(o.err.find("no depth within"), std::string::npos) << o.err;
+  EXPECT_FALSE(std::filesystem::exists(mesh));
 }
 
 // The summary line of `detect` (stdout's last line).

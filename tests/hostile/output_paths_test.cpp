@@ -1,7 +1,12 @@
-// Output paths: only regular files are replaced; a device, a FIFO or a folder is refused
+// Output paths: only regular files are replaced; a device, a FIFO, a socket or a folder is refused
 // before any work (exit 2); a symlink's target is written, atomically; an output that is an
 // input, or two outputs on one path, are refused before any work.
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
+
+#include <cstring>
 
 #include "tests/hostile/hostile_checks.h"
 
@@ -74,6 +79,42 @@ TEST_F(OutputPaths, TwoOutputsOnOnePathAreRefused) {
   const std::string out = (dir() / "x").string();
   EXPECT_TRUE(exits_with_one_line(run_cli({"detect", ds(), "-q", "--json", out, "--csv", out}), 2, out));
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(OutputPaths, ASocketIsRefused) {
+  const fs::path socket_path = dir() / "out.json";
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  ASSERT_GE(fd, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  ASSERT_LT(socket_path.string().size(), sizeof address.sun_path);
+  std::strcpy(address.sun_path, socket_path.c_str());
+  ASSERT_EQ(::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address), 0);
+  EXPECT_TRUE(exits_with_one_line(run_cli({"detect", ds(), "-q", "--json", socket_path.string()}), 2,
+                                  socket_path.string()));
+  EXPECT_TRUE(fs::is_socket(socket_path));
+  ::close(fd);
+}
+
+TEST_F(OutputPaths, ThePresetAsOutputIsRefused) {
+  const fs::path preset = dir() / "preset.json";
+  write_file(preset, R"({"grow.angle_deg": 5})");
+  EXPECT_TRUE(exits_with_one_line(
+      run_cli({"detect", ds(), "-q", "--params", preset.string(), "--json", preset.string()}), 2, preset.string()));
+  EXPECT_EQ(read_file(preset), R"({"grow.angle_deg": 5})");
+}
+
+// A new file inside the input folder that the readers would take from it (an image, a list).
+TEST_F(OutputPaths, AnOutputAReaderWouldTakeFromTheInputFolderIsRefused) {
+  for (const std::string name : {"labels.png", "depth.txt", "rgb/extra.jpg"}) {
+    const std::string out = ds() + "/" + name;
+    const std::string flag = name == "labels.png" ? "--labels" : "--json";
+    const std::vector<std::string> args = name == "labels.png"
+                                              ? std::vector<std::string>{"planes", ds(), "--labels", out}
+                                              : std::vector<std::string>{"detect", ds(), "-q", "--json", out};
+    EXPECT_TRUE(exits_with_one_line(run_cli(args), 2, out)) << name << " (" << flag << ")";
+    EXPECT_FALSE(fs::exists(out)) << name;
+  }
 }
 
 }  // namespace

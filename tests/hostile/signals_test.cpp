@@ -41,6 +41,17 @@ Limits signal_during_write(int signal, const fs::path& dir, std::chrono::millise
   return l;
 }
 
+// Signals only once the staged output folder (a temporary under `dir`) exists: the signal then
+// always lands while the folder is half written, however slow the machine. The commands given
+// to it write for tens of seconds after the folder appears (simulate: 200 frames, about 40 s),
+// far beyond the poll's few milliseconds.
+Limits signal_while_staged(int signal, const fs::path& dir) {
+  Limits l;
+  l.signal = signal;
+  l.signal_when = [dir] { return !leftovers(dir).empty(); };
+  return l;
+}
+
 class Signals : public ::testing::Test {
  protected:
   fs::path dir() const { return tmp_.path(); }
@@ -67,8 +78,7 @@ class Signals : public ::testing::Test {
 
 TEST_F(Signals, SimulateInterruptedKeepsNoHalfFolder) {
   const fs::path ds = out() / "sim";
-  const Outcome o = run_cli({"simulate", ds.string(), "--frames", "200", "--quiet"},
-                            signal_during_write(SIGINT, out(), std::chrono::milliseconds(800)));
+  const Outcome o = run_cli({"simulate", ds.string(), "--frames", "200", "--quiet"}, signal_while_staged(SIGINT, out()));
   expect_clean_stop(o, SIGINT);
   EXPECT_FALSE(fs::exists(ds));
 }

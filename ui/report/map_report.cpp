@@ -33,8 +33,7 @@ void write_map_report(const std::string& pdf_path, const std::string& input, con
   in.map = &map;
   const std::filesystem::path tmp =
       std::filesystem::temp_directory_path() / ("tunnelmap-report-" + std::to_string(getpid()));
-  TempRegistry::add(tmp);  // removed on SIGINT/SIGTERM too
-  std::filesystem::create_directories(tmp);
+  TempRegistry::create(tmp, [&] { std::filesystem::create_directories(tmp); });  // removed on SIGINT/SIGTERM too
   const std::string ply = map_ply.empty() ? (tmp / "map.ply").string() : map_ply;
   const std::string png = (tmp / "map.png").string();
   std::string why;

@@ -21,6 +21,8 @@ namespace {
 using testing::IoTempDir;
 using testing::expect_input_error;
 
+constexpr long long kDefaultMaxPixels = input_keys::max_image_pixels.default_value;
+
 cv::Mat depth_ramp(int w, int h) {
   cv::Mat img(h, w, CV_16UC1);
   for (int v = 0; v < h; ++v)
@@ -167,13 +169,13 @@ TEST(RgbImage, AcceptsPngAndJpegOnly) {
   for (const char* name : {"c.png", "c.jpg", "c.bmp"}) ASSERT_TRUE(cv::imwrite(tmp.file(name), bgr));
   int w = 0, h = 0;
   for (const char* name : {"c.png", "c.jpg"}) {
-    const auto rgb = read_rgb_image(tmp.file(name), w, h);
+    const auto rgb = read_rgb_image(tmp.file(name), w, h, kDefaultMaxPixels);
     ASSERT_EQ(rgb.size(), 8u * 6u * 3u);
     EXPECT_NEAR(rgb[0], 200, 3) << name;  // red first
     EXPECT_NEAR(rgb[2], 30, 3) << name;
   }
   // OpenCV would decode BMP, TIFF, EXR...: only the formats datasets use are let through.
-  expect_input_error([&] { read_rgb_image(tmp.file("c.bmp"), w, h); }, {"c.bmp", "neither a PNG nor a JPEG"});
+  expect_input_error([&] { read_rgb_image(tmp.file("c.bmp"), w, h, kDefaultMaxPixels); }, {"c.bmp", "neither a PNG nor a JPEG"});
   // A JPEG whose frame header claims 60000x50000 is refused before decoding.
   auto jpeg = testing::read_binary_file(tmp.file("c.jpg"));
   for (std::size_t i = 2; i + 9 < jpeg.size(); ++i)
@@ -183,7 +185,38 @@ TEST(RgbImage, AcceptsPngAndJpegOnly) {
       break;
     }
   testing::write_binary_file(tmp.file("huge.jpg"), jpeg);
-  expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h); }, {"huge.jpg", "absurd image size 60000x50000"});
+  expect_input_error([&] { read_rgb_image(tmp.file("huge.jpg"), w, h, kDefaultMaxPixels); }, {"huge.jpg", "absurd image size 60000x50000"});
+}
+
+// libjpeg called directly decodes what OpenCV's decoder (the same libjpeg) gave, pixel for pixel.
+TEST(RgbImage, JpegDecodesAsOpenCvDecodesIt) {
+  IoTempDir tmp;
+  cv::Mat bgr(48, 64, CV_8UC3);
+  cv::randu(bgr, cv::Scalar::all(0), cv::Scalar::all(255));
+  ASSERT_TRUE(cv::imwrite(tmp.file("r.jpg"), bgr));
+  const cv::Mat expected = cv::imread(tmp.file("r.jpg"), cv::IMREAD_COLOR);
+  int w = 0, h = 0;
+  const auto rgb = read_rgb_image(tmp.file("r.jpg"), w, h, kDefaultMaxPixels);
+  ASSERT_EQ(w, 64);
+  ASSERT_EQ(h, 48);
+  int differing = 0;
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u)
+      for (int c = 0; c < 3; ++c)
+        differing += rgb[(static_cast<std::size_t>(v) * w + u) * 3 + c] != expected.at<cv::Vec3b>(v, u)[2 - c];
+  EXPECT_EQ(differing, 0);
+}
+
+TEST(RgbImage, AGreyJpegAndOneOverThePixelLimitAreRefused) {
+  IoTempDir tmp;
+  ASSERT_TRUE(cv::imwrite(tmp.file("g.jpg"), cv::Mat(6, 8, CV_8UC1, cv::Scalar(90))));
+  ASSERT_TRUE(cv::imwrite(tmp.file("c.jpg"), cv::Mat(6, 8, CV_8UC3, cv::Scalar(1, 2, 3))));
+  int w = 0, h = 0;
+  expect_input_error([&] { read_rgb_image(tmp.file("g.jpg"), w, h, kDefaultMaxPixels); },
+                     {"g.jpg", "RGB images must be 8-bit 3-channel colour (a 1-component JPEG)"});
+  expect_input_error([&] { read_rgb_image(tmp.file("c.jpg"), w, h, 47); },
+                     {"c.jpg", "image of 8x6 pixels is too large (at most 47 = 0.0 Mpx, input.max_image_pixels)"});
+  EXPECT_EQ(read_rgb_image(tmp.file("c.jpg"), w, h, 48).size(), 8u * 6u * 3u);
 }
 
 TEST(DepthPng, DecodesFromMemoryLikeFromFile) {

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "core/io/input_options.h"
 #include "core/util/error.h"
 
 namespace tunnelmap::oni {
@@ -70,7 +71,8 @@ Built one_frame_recording() {
 
 std::string problem(const std::string& bytes) {
   try {
-    check_recording(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), "rec.oni");
+    check_recording(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size(), "rec.oni",
+                    input_keys::max_image_pixels.default_value);
     return "";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "rec.oni");

@@ -9,6 +9,8 @@
 #include "core/baselines/baseline_options.h"
 #include "core/baselines/method_runner.h"
 #include "core/fusion/fusion_options.h"
+#include "core/io/input_options.h"
+#include "core/io/read_options.h"
 #include "core/mapping/map_options.h"
 #include "core/mapping/slam_options.h"
 #include "core/normals/cloud_options.h"
@@ -23,6 +25,7 @@ using namespace tunnelmap;
 namespace {
 
 struct AllOptions {
+  InputLimitOptions input;
   CloudOptions cloud;
   NormalOptions normals;
   GrowOptions grow;
@@ -34,13 +37,14 @@ struct AllOptions {
 };
 
 AllOptions derive(const Parameters& p) {
-  return {cloud_options(p),  normal_options(p),      grow_options(p),  tunnel_options(p),
+  return {input_limit_options(p), cloud_options(p),  normal_options(p),      grow_options(p),  tunnel_options(p),
           fusion_options(p), station_map_options(p), slam_options(p), baseline_options(p)};
 }
 
 // The stages whose options differ.
 std::vector<std::string> changed(const AllOptions& a, const AllOptions& b) {
   std::vector<std::string> out;
+  if (a.input != b.input) out.push_back("input");
   if (a.cloud != b.cloud) out.push_back("cloud");
   if (a.normals != b.normals) out.push_back("normals");
   if (a.grow != b.grow) out.push_back("grow");
@@ -56,6 +60,7 @@ std::vector<std::string> changed(const AllOptions& a, const AllOptions& b) {
 
 TEST(ParameterDeclarations, DefaultConstructedOptionsEqualThoseOfDefaultParameters) {
   const Parameters defaults;
+  EXPECT_TRUE(InputLimitOptions() == input_limit_options(defaults));
   EXPECT_TRUE(CloudOptions() == cloud_options(defaults));
   EXPECT_TRUE(NormalOptions() == normal_options(defaults));
   EXPECT_TRUE(GrowOptions() == grow_options(defaults));
@@ -65,6 +70,8 @@ TEST(ParameterDeclarations, DefaultConstructedOptionsEqualThoseOfDefaultParamete
   EXPECT_TRUE(StationMapOptions() == station_map_options(defaults));
   EXPECT_TRUE(BaselineOptions() == baseline_options(defaults));
   // The values the structs held before they took them from the declarations.
+  EXPECT_EQ(InputLimitOptions().max_image_pixels, 4096LL * 4096LL);
+  EXPECT_EQ(ReadOptions().max_image_pixels, 4096LL * 4096LL);
   EXPECT_EQ(GrowOptions().distance_m, 0.015);
   EXPECT_EQ(GrowOptions().candidate_distance_m, 0.040);
   EXPECT_EQ(TunnelOptions().zone_cluster_m, 0.010);
@@ -119,7 +126,7 @@ TEST(ParameterDeclarations, AKeyReachesItsOwnStageTyped) {
 
 TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
   const std::vector<std::string> expected = {
-      "cloud.max_range_m", "cloud.min_range_m", "normals.smoothing_px", "normals.max_depth_change",
+      "input.max_image_pixels", "cloud.max_range_m", "cloud.min_range_m", "normals.smoothing_px", "normals.max_depth_change",
       "grow.angle_deg", "grow.distance_mm", "grow.candidate_distance_mm", "grow.neighbourhood_n",
       "grow.min_points", "grow.min_area_m2", "grow.refit_normal", "grow.grid_step", "grow.edge_on_pass", "grow.cell_px",
       "tunnel.class_angle_deg", "tunnel.outlier_bin_deg", "tunnel.outlier_max_deg", "tunnel.zone_cluster_mm",
