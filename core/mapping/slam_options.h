@@ -26,9 +26,10 @@ inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};
 inline constexpr ParameterKey<double> max_plate_depth_m{
-    "slam.max_plate_depth_m", "m", 2.5, 0.5, 20.0, 0.1, Stage::Map, "Plate range",
-    "Plates across the girder farther than this do not localise the camera (their depth is "
-    "quantised too coarsely)"};
+    "slam.max_plate_depth_m", "m", 5.0, 0.5, 20.0, 0.1, Stage::Map, "Plate range",
+    "Plates across the girder farther than this do not localise the camera; nearer, their "
+    "weight follows the depth's steps (slam.depth_step_mm). A far plate seen through the "
+    "manhole of a near one ties the two along the girder"};
 inline constexpr ParameterKey<double> plate_gate_m{
     "slam.plate_gate_m", "m", 0.3, 0.02, 2.0, 0.01, Stage::Map, "Plate gate",
     "Farthest a plate may lie along the girder from a known plate and be that plate; nearer, the "
@@ -38,14 +39,20 @@ inline constexpr ParameterKey<double> point_sigma_mm{
     "slam.point_sigma_mm", "mm", 1.5, 0.05, 100.0, 0.05, Stage::Map, "Depth noise at 1 m",
     "Standard deviation of one depth point at 1 m; it grows with the square of the depth"};
 inline constexpr ParameterKey<double> patch_floor_mm{
-    "slam.patch_floor_mm", "mm", 1.0, 0.01, 100.0, 0.01, Stage::Map, "Patch floor",
-    "Smallest uncertainty of a patch's position, however many points it has (calibration, "
-    "quantisation)"};
+    "slam.patch_floor_mm", "mm", 0.3, 0.01, 100.0, 0.01, Stage::Map, "Patch floor",
+    "Smallest uncertainty of a patch's position at 1 m, however many points it has "
+    "(calibration); it grows with the square of the depth. The depth's steps add their own "
+    "(slam.depth_step_mm)"};
 inline constexpr ParameterKey<bool> localise{
     "slam.localise", "", false, 0, 1, 1, Stage::Map, "Localise while running",
     "1: while a posed sequence runs (detect, the GUI, a live camera) each frame is localised "
     "against the structure mapped so far and takes its context with that pose; 0: frames keep "
     "their given poses (map and fuse still optimise them)"};
+inline constexpr ParameterKey<double> depth_step_mm{
+    "slam.depth_step_mm", "mm", 2.9, 0.0, 50.0, 0.1, Stage::Map, "Depth step at 1 m",
+    "The sensor's depth resolution at 1 m: a structured-light camera quantises depth in steps "
+    "of z^2 / (f b s) (PrimeSense class: 2.9 mm at 1 m); 0 for a camera without steps "
+    "(time of flight). A patch that spans few steps keeps their error"};
 inline constexpr ParameterKey<double> correction_sigmas{
     "slam.correction_sigmas", "sigma", 3.0, 0.0, 100.0, 0.5, Stage::Map, "Evidence for a correction",
     "The poses are corrected only when the structure disagrees with them by more than its "
@@ -68,6 +75,7 @@ struct SlamOptions {
   double plate_gate_m = slam_keys::plate_gate_m.default_value;
   double point_sigma_m = mm_to_m(slam_keys::point_sigma_mm.default_value);
   double patch_floor_m = mm_to_m(slam_keys::patch_floor_mm.default_value);
+  double depth_step_m = mm_to_m(slam_keys::depth_step_mm.default_value);
   double correction_sigmas = slam_keys::correction_sigmas.default_value;
   int window_groups = slam_keys::window_groups.default_value;
   bool localise = slam_keys::localise.default_value;

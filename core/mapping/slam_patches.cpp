@@ -21,6 +21,16 @@ struct Moments {
   }
 };
 
+// What a patch keeps of the depth's quantisation: one step's error (uniform, step / sqrt(12))
+// when all its points sit on one step (a plate seen head-on), averaged over the steps it spans
+// when it runs through many (a wall seen along its length).
+double quantisation_sigma_m(double step_m, const Eigen::Matrix3d& camera_cov) {
+  if (!(step_m > 0.0)) return 0.0;
+  const double depth_span = std::sqrt(12.0 * std::max(0.0, camera_cov(2, 2)));
+  const double steps = std::max(1.0, depth_span / step_m);
+  return step_m / std::sqrt(12.0 * steps);
+}
+
 // Centroid, in-plane spread and the patch's own normal; the scatter along that normal (the
 // points' noise) is left out, so that a patch lying exactly on its landmark has no residual.
 bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
@@ -33,11 +43,12 @@ bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
   for (int k = 1; k < 3; ++k)
     out.spread.col(k - 1) = eig.eigenvectors().col(k) * std::sqrt(std::max(0.0, eig.eigenvalues()[k]));
   // Structured light's depth error grows with z^2, and part of it does not average out over a
-  // patch (a plate seen head-on sits on one disparity step): the floor grows alike.
+  // patch: the floor grows alike, and so does the depth step.
   const double z = out.centroid.norm();
   const double growth = std::max(1.0, z * z);
   const double point_sigma = o.point_sigma_m * growth, floor = o.patch_floor_m * growth;
-  out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor);
+  const double step = quantisation_sigma_m(o.depth_step_m * z * z, cov);
+  out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor + step * step);
   return true;
 }
 
