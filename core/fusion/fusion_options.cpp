@@ -10,7 +10,7 @@ namespace tunnelmap {
 bool operator==(const FusionOptions& a, const FusionOptions& b) {
   return a.voxel_m == b.voxel_m && a.truncation_m == b.truncation_m && a.min_depth_m == b.min_depth_m &&
          a.max_depth_m == b.max_depth_m && a.max_weight == b.max_weight && a.min_weight == b.min_weight &&
-         a.bounds_margin_m == b.bounds_margin_m && a.max_extent_m == b.max_extent_m &&
+         a.bounds_margin_m == b.bounds_margin_m && a.max_extent_m == b.max_extent_m && a.max_volume_bytes == b.max_volume_bytes &&
          a.pose_group_m == b.pose_group_m;
 }
 
@@ -25,6 +25,7 @@ FusionOptions fusion_options(const Parameters& p) {
   o.min_weight = p.get(min_weight);
   o.bounds_margin_m = p.get(bounds_margin_m);
   o.max_extent_m = p.get(max_extent_m);
+  o.max_volume_bytes = std::size_t(p.get(max_volume_mb)) << 20;
   o.pose_group_m = mm_to_m(p.get(pose_group_mm));
   return o;
 }
@@ -32,7 +33,7 @@ FusionOptions fusion_options(const Parameters& p) {
 ParameterGroup fusion_parameter_group() {
   using namespace fusion_keys;
   return {{voxel_mm.spec(), truncation_mm.spec(), max_depth_m.spec(), max_weight.spec(), min_weight.spec(),
-           bounds_margin_m.spec(), max_extent_m.spec(), pose_group_mm.spec()},
+           bounds_margin_m.spec(), max_extent_m.spec(), max_volume_mb.spec(), pose_group_mm.spec()},
           {}};
 }
 
@@ -42,12 +43,14 @@ TsdfOptions tsdf_options(const FusionOptions& o) {
   t.min_depth_m = o.min_depth_m;
   t.max_depth_m = o.max_depth_m;
   t.max_weight = o.max_weight;
+  t.max_bytes = o.max_volume_bytes;
   return t;
 }
 
 SparseVolumeLimits sparse_volume_limits(const FusionOptions& o) {
   SparseVolumeLimits l;
   l.max_extent_m = o.max_extent_m;
+  l.max_bytes = o.max_volume_bytes;
   return l;
 }
 

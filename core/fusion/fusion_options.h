@@ -38,6 +38,10 @@ inline constexpr ParameterKey<double> max_extent_m{
     "fusion.max_extent_m", "m", 2000.0, 0.5, 10000.0, 0.5, Stage::Fusion, "Max extent",
     "Safety limit on the fused data's span along a world axis, far above any girder (memory "
     "follows the surface, not this box)"};
+inline constexpr ParameterKey<int> max_volume_mb{
+    "fusion.max_volume_mb", "MiB", 1800, 1, 65536, 1, Stage::Fusion, "Volume memory budget",
+    "Most memory the fused volume may take; a surface that needs more is refused before it is "
+    "allocated (raise fusion.voxel_mm or lower fusion.max_depth_m)"};
 inline constexpr ParameterKey<double> pose_group_mm{
     "fusion.pose_group_mm", "mm", 50.0, 1.0, 1000.0, 1.0, Stage::Fusion, "Pose grouping",
     "Consecutive frames whose camera moved less than this (and 5 deg) are one arm pose"};
@@ -52,6 +56,7 @@ struct FusionOptions {
   int min_weight = fusion_keys::min_weight.default_value;
   double bounds_margin_m = fusion_keys::bounds_margin_m.default_value;
   double max_extent_m = fusion_keys::max_extent_m.default_value;
+  std::size_t max_volume_bytes = std::size_t(fusion_keys::max_volume_mb.default_value) << 20;
   double pose_group_m = mm_to_m(fusion_keys::pose_group_mm.default_value);
 };
 bool operator==(const FusionOptions& a, const FusionOptions& b);

@@ -90,7 +90,7 @@ VoxelBlock& SparseTsdfVolume::block_at(const Eigen::Vector3i& coords) {
     if (too_long)
       throw FusionDataError("fusion: the data spans " + std::to_string(span) +
                            " m, more than fusion.max_extent_m = " + std::to_string(limits_.max_extent_m));
-    throw FusionDataError("fusion: the observed surface needs more than " +
+    throw FusionDataError("fusion: the observed surface needs more than fusion.max_volume_mb = " +
                          std::to_string(limits_.max_bytes >> 20) + " MiB of voxel blocks; raise "
                          "fusion.voxel_mm or lower fusion.max_depth_m");
   }

@@ -15,6 +15,7 @@ struct TsdfOptions {
   double min_depth_m = 0.3;
   double max_depth_m = 2.5;
   int max_weight = 64;
+  std::size_t max_bytes = std::size_t(1800) << 20;  // the dense volume's budget
   int threads = 0;  // 0 = hardware concurrency (at most 8)
 };
 

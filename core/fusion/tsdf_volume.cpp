@@ -13,17 +13,17 @@ namespace tunnelmap {
 namespace {
 // tsdf (4) + weight (2) + rgb (3) + colour weight (1) bytes per voxel; 2 GB is the documented memory target.
 constexpr std::size_t kBytesPerVoxel = 10;
-constexpr std::size_t kMaxBytes = std::size_t(1800) << 20;
 }  // namespace
 
 TsdfVolume::TsdfVolume(const VoxelGrid& grid, const TsdfOptions& options)
     : grid_(grid), options_(options) {
   if (grid.dims.minCoeff() < 2 || !(grid.voxel_m > 0))
     throw FusionDataError("fusion: empty volume (no depth inside the fusion range?)");
-  if (grid.count() > kMaxBytes / kBytesPerVoxel)
+  if (grid.count() > options.max_bytes / kBytesPerVoxel)
     throw FusionDataError("fusion: volume of " + std::to_string(grid.dims.x()) + "x" +
                          std::to_string(grid.dims.y()) + "x" + std::to_string(grid.dims.z()) +
-                         " voxels needs more than 1.8 GB; raise fusion.voxel_mm or lower "
+                         " voxels needs more than fusion.max_volume_mb = " +
+                         std::to_string(options.max_bytes >> 20) + " MiB; raise fusion.voxel_mm or lower "
                          "fusion.max_depth_m");
   tsdf_.assign(grid.count(), 1.0f);
   weight_.assign(grid.count(), 0);

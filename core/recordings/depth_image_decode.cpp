@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/recordings/byte_cursor.h"
+#include "core/recordings/compressed_image_size.h"
 
 namespace tunnelmap::recordings {
 namespace {
@@ -43,8 +44,16 @@ void copy_plane(const RosImage& img, std::vector<float>& out) {
   }
 }
 
-cv::Mat decode_png_bytes(const std::uint8_t* data, std::size_t size, int flags) {
+// PNG or JPEG bytes, refused before decoding when they are neither or declare more than
+// `max_pixels` pixels.
+cv::Mat decode_png_bytes(const std::uint8_t* data, std::size_t size, int flags, long long max_pixels) {
   if (size == 0) throw TruncatedData("empty compressed image");
+  int width = 0, height = 0;
+  if (!compressed_image_size(data, size, width, height))
+    throw TruncatedData("compressed image is neither a PNG nor a JPEG");
+  if (static_cast<long long>(width) * height > max_pixels)
+    throw TruncatedData("compressed image of " + std::to_string(width) + "x" + std::to_string(height) +
+                        " pixels is over input.max_image_pixels = " + std::to_string(max_pixels));
   const cv::Mat bytes(1, static_cast<int>(size), CV_8UC1, const_cast<std::uint8_t*>(data));
   cv::Mat m = cv::imdecode(bytes, flags);
   if (m.empty()) throw TruncatedData("compressed image does not decode");
@@ -82,7 +91,7 @@ DecodedDepth decode_depth_image(const RosImage& img) {
   return d;
 }
 
-DecodedDepth decode_compressed_depth(const RosCompressedImage& img) {
+DecodedDepth decode_compressed_depth(const RosCompressedImage& img, long long max_pixels) {
   if (img.format.find("compressedDepth") == std::string::npos)
     throw TruncatedData("CompressedImage format '" + img.format + "' is not compressedDepth");
   if (img.format.find("rvl") != std::string::npos)
@@ -90,7 +99,7 @@ DecodedDepth decode_compressed_depth(const RosCompressedImage& img) {
   ByteCursor header(img.data, img.size);
   header.u32();  // compression format
   const float quant_a = header.read<float>(), quant_b = header.read<float>();
-  const cv::Mat png = decode_png_bytes(img.data + 12, img.size - 12, cv::IMREAD_UNCHANGED);
+  const cv::Mat png = decode_png_bytes(img.data + 12, img.size - 12, cv::IMREAD_UNCHANGED, max_pixels);
   if (png.type() != CV_16UC1) throw TruncatedData("compressedDepth PNG is not 16-bit single channel");
   DecodedDepth d;
   d.width = png.cols;
@@ -125,8 +134,9 @@ std::vector<std::uint8_t> decode_color_image(const RosImage& img, int& width, in
   return rgb_from_mat(m, code);
 }
 
-std::vector<std::uint8_t> decode_compressed_color(const RosCompressedImage& img, int& width, int& height) {
-  const cv::Mat bgr = decode_png_bytes(img.data, img.size, cv::IMREAD_COLOR);
+std::vector<std::uint8_t> decode_compressed_color(const RosCompressedImage& img, long long max_pixels, int& width,
+                                                  int& height) {
+  const cv::Mat bgr = decode_png_bytes(img.data, img.size, cv::IMREAD_COLOR, max_pixels);
   width = bgr.cols;
   height = bgr.rows;
   return rgb_from_mat(bgr, cv::COLOR_BGR2RGB);

@@ -18,11 +18,13 @@ struct DecodedDepth {
 
 DecodedDepth decode_depth_image(const RosImage& img);
 // image_transport's compressedDepth: a 12-byte header (format, two inverse-depth quantisation
-// parameters) then a PNG of 16UC1 depth or of quantised inverse 32FC1 depth.
-DecodedDepth decode_compressed_depth(const RosCompressedImage& img);
+// parameters) then a PNG of 16UC1 depth or of quantised inverse 32FC1 depth. Compressed
+// images that declare more than `max_pixels` pixels are refused before they are decoded.
+DecodedDepth decode_compressed_depth(const RosCompressedImage& img, long long max_pixels);
 
 // RGB8 row-major; width/height set.
 std::vector<std::uint8_t> decode_color_image(const RosImage& img, int& width, int& height);
-std::vector<std::uint8_t> decode_compressed_color(const RosCompressedImage& img, int& width, int& height);
+std::vector<std::uint8_t> decode_compressed_color(const RosCompressedImage& img, long long max_pixels, int& width,
+                                                  int& height);
 
 }  // namespace tunnelmap::recordings

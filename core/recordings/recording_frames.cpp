@@ -183,7 +183,7 @@ void RecordingFrames::for_each_frame(const std::function<bool(DepthFrame&)>& vis
     if (types.at(m.topic) == RosType::CompressedImage) {
       const RosCompressedImage img = decode_compressed_image(m, enc);
       header = img.header;
-      d = decode_compressed_depth(img);
+      d = decode_compressed_depth(img, read_.max_image_pixels);
     } else {
       const RosImage img = decode_image(m, enc);
       header = img.header;
@@ -236,7 +236,7 @@ void RecordingFrames::for_each_frame(const std::function<bool(DepthFrame&)>& vis
       if (types.at(m.topic) == RosType::CompressedImage) {
         const RosCompressedImage img = decode_compressed_image(m, enc);
         c.stamp_ns = img.header.stamp_ns;
-        c.rgb = decode_compressed_color(img, c.width, c.height);
+        c.rgb = decode_compressed_color(img, read_.max_image_pixels, c.width, c.height);
       } else {
         const RosImage img = decode_image(m, enc);
         c.stamp_ns = img.header.stamp_ns;

@@ -48,7 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     attempt([&] {
       const RosCompressedImage img = decode_compressed_image(m, e);
       if (img.size > size) std::abort();
-      attempt([&] { decode_compressed_depth(img); });
+      attempt([&] { decode_compressed_depth(img, 4096LL * 4096LL); });
     });
     attempt([&] {
       const RosCameraInfo info = decode_camera_info(m, e);

@@ -108,6 +108,21 @@ TEST_F(Messages, FusingFramesWithNoDepthInRangeIsADataProblem) {
   EXPECT_FALSE(std::filesystem::exists(mesh));
 }
 
+// A surface that needs more memory than the volume's budget is refused before it is allocated:
+// a data problem naming the input, for the sparse volume and the dense one alike.
+TEST_F(Messages, AVolumeOverItsMemoryBudgetIsADataProblem) {
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{}, std::vector<std::string>{"--dense"}}) {
+    const std::filesystem::path mesh = dir() / "mesh.ply";
+    std::vector<std::string> args = {"fuse", ds(), "--quiet", "--no-pose-refinement", "--set",
+                                     "fusion.max_volume_mb=1", "--mesh", mesh.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const Outcome o = run_cli(args);
+    EXPECT_TRUE(exits_with_one_line(o, 3, ds())) << o.err;
+    EXPECT_NE(o.err.find("fusion.max_volume_mb = 1 MiB"), std::string::npos) << o.err;
+    EXPECT_FALSE(std::filesystem::exists(mesh));
+  }
+}
+
 // The summary line of `detect` (stdout's last line).
 std::string summary(const Outcome& o) { return o.out.substr(o.out.rfind("summary:")); }
 
