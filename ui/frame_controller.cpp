@@ -11,10 +11,8 @@
 #include <QMenu>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <atomic>
 
 #include "core/mapping/map_options.h"
-#include "ui/background_job.h"
 #include "ui/depth_view_widget.h"
 #include "ui/file_dialogs.h"
 #include "ui/frame_keys.h"
@@ -32,7 +30,12 @@ namespace {
 constexpr int kDebounceMs = 60;  // while a slider is dragged; a release runs at once
 }  // namespace
 
-FrameController::FrameController(WindowContext& ctx) : QObject(ctx.window), ctx_(ctx), mesh_(ctx.view3d) {
+FrameController::FrameController(WindowContext& ctx)
+    : QObject(ctx.window),
+      ctx_(ctx),
+      mesh_(ctx.view3d),
+      opener_(ctx, [this](vtkSmartPointer<vtkPolyData> mesh) { mesh_.show(mesh, current_.get(), last_.frame_index); }) {
+  connect(&opener_, &MeshOpener::opened, this, &FrameController::meshOpened);
   build_parameters_dock();
   build_results_dock();
   debounce_.setSingleShot(true);
@@ -262,49 +265,6 @@ void FrameController::stop_live() {
   if (ctx_.source) timeline_->set_frame_count(static_cast<int>(ctx_.source->size()));
 }
 
-bool FrameController::open_mesh(const QString& path) {
-  if (ctx_.job->running()) {
-    ctx_.status->show_error(tr("%1: wait for the running job, or cancel it, before opening a mesh").arg(path));
-    return false;
-  }
-  ctx_.status->show_progress(0);  // busy while the file is read, then the pieces
-  ctx_.status->set_text(tr("Opening mesh %1…").arg(path));
-  const std::atomic<bool>& cancel = ctx_.job->cancel_flag();
-  ctx_.job->start([this, path, &cancel] {
-    vtkSmartPointer<vtkPolyData> mesh;
-    QString error;
-    try {
-      mesh = read_mesh_ply(path.toStdString(), [this, &cancel](int done, int total) {
-        QMetaObject::invokeMethod(this, [this, done, total] { ctx_.status->set_progress(done, total); });
-        return !cancel.load();
-      });
-    } catch (const std::exception& e) {
-      error = QString::fromStdString(e.what());
-    }
-    if (cancel.load()) mesh = nullptr;  // a cancel while the file was read
-    QMetaObject::invokeMethod(this, [=] { finish_open_mesh(path, mesh, error); });
-  });
-  return true;
-}
-
-// On the GUI thread: the mesh swapped into the view.
-void FrameController::finish_open_mesh(const QString& path, vtkSmartPointer<vtkPolyData> mesh, const QString& error) {
-  ctx_.status->hide_progress();
-  ctx_.job->finished();
-  if (!error.isEmpty()) {
-    ctx_.status->show_error(error);
-    return emit meshOpened(false);
-  }
-  if (!mesh) {
-    ctx_.status->set_text(tr("Opening mesh %1 cancelled").arg(path));
-    return emit meshOpened(false);
-  }
-  mesh_.show(mesh, current_.get(), last_.frame_index);
-  ctx_.status->set_text(tr("Mesh %1: %2 vertices, %3 triangles")
-                            .arg(path)
-                            .arg(mesh->GetNumberOfPoints())
-                            .arg(mesh->GetNumberOfPolys()));
-  emit meshOpened(true);
-}
+bool FrameController::open_mesh(const QString& path) { return opener_.open(path); }
 
 }  // namespace tunnelmap::ui

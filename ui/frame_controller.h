@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 
+#include "ui/mesh_opener.h"
 #include "ui/mesh_overlay.h"
 #include "ui/pipeline_runner.h"
 
@@ -77,7 +78,6 @@ class FrameController : public QObject {
   void on_run_finished(const RunOutcome& outcome);
   void show_views(const RunOutcome& outcome);
   void record_result(const RunOutcome& outcome);
-  void finish_open_mesh(const QString& path, vtkSmartPointer<vtkPolyData> mesh, const QString& error);
 
   WindowContext& ctx_;
   QDockWidget* params_dock_ = nullptr;
@@ -91,6 +91,7 @@ class FrameController : public QObject {
   PipelineRunner runner_;
   QTimer debounce_;
   MeshOverlay mesh_;
+  MeshOpener opener_;
   int frame_index_ = 0;
   bool reset_camera_ = true;
   std::shared_ptr<const scene::ProcessedFrame> current_;
