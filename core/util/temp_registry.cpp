@@ -47,6 +47,21 @@ sigset_t interrupt_signals() {
   return set;
 }
 
+// Moves `p` out of the way of threads still writing into it before emptying it: a write into
+// the old path then fails (its folder is gone) instead of adding files while the folder is
+// emptied. A folder such a thread recreates (create_directories) is moved and removed again.
+void remove_under_writers(const fs::path& p) {
+  const fs::path trash = p.parent_path() / (p.filename().string() + ".interrupted-" + std::to_string(::getpid()));
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(p, ec))) return;
+    fs::rename(p, trash, ec);
+    const fs::path& victim = ec ? p : trash;
+    fs::remove_all(victim, ec);
+    if (victim == trash && fs::exists(fs::symlink_status(trash, ec))) fs::remove_all(trash, ec);
+  }
+}
+
 [[noreturn]] void clean_up_and_exit(int signal, const std::string& program) {
   // First every creation in progress finishes (its path then exists and is registered); new
   // ones wait. Then the lock is held until _exit: no other thread can register (and then
@@ -55,13 +70,7 @@ sigset_t interrupt_signals() {
   Creations& c = creations();
   c.interrupted = true;
   c.done.wait(lock, [&] { return c.running == 0; });
-  for (const fs::path& p : live_paths()) {
-    // Other threads still run: a file they finish writing into a folder while it is being
-    // emptied makes an attempt fail ("not empty"); each then waits at the registry.
-    std::error_code ec;
-    for (int attempt = 0; attempt < 10; ++attempt)
-      if (fs::remove_all(p, ec) != static_cast<std::uintmax_t>(-1) && !ec) break;
-  }
+  for (const fs::path& p : live_paths()) remove_under_writers(p);
   std::fprintf(stderr, "%s: interrupted by %s; temporary files removed, earlier outputs kept\n", program.c_str(),
                signal == SIGINT ? "SIGINT" : "SIGTERM");
   std::fflush(stderr);
