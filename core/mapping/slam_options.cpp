@@ -10,6 +10,7 @@ bool operator==(const SlamOptions& a, const SlamOptions& b) {
          a.max_wall_depth_m == b.max_wall_depth_m && a.max_plate_depth_m == b.max_plate_depth_m &&
          a.plate_gate_m == b.plate_gate_m && a.point_sigma_m == b.point_sigma_m &&
          a.patch_floor_m == b.patch_floor_m && a.depth_step_m == b.depth_step_m && a.correction_sigmas == b.correction_sigmas && a.window_groups == b.window_groups &&
+         a.window_iterations == b.window_iterations &&
          a.min_odometry_m == b.min_odometry_m && a.min_odometry_deg == b.min_odometry_deg &&
          a.min_patch_points == b.min_patch_points && a.layer_tolerance_m == b.layer_tolerance_m &&
          a.max_layer_shift_m == b.max_layer_shift_m && a.max_layer_slope == b.max_layer_slope &&
@@ -30,6 +31,7 @@ SlamOptions slam_options(const Parameters& p) {
   o.depth_step_m = mm_to_m(p.get(slam_keys::depth_step_mm));
   o.correction_sigmas = p.get(slam_keys::correction_sigmas);
   o.window_groups = p.get(slam_keys::window_groups);
+  o.window_iterations = p.get(slam_keys::window_iterations);
   o.localise = p.get(slam_keys::localise);
   return o;
 }
@@ -38,7 +40,8 @@ ParameterGroup slam_parameter_group() {
   using namespace slam_keys;
   return {{odometry_mm_per_sqrt_m.spec(), odometry_deg_per_sqrt_m.spec(), odometry_in_world.spec(), band_m.spec(), max_wall_depth_m.spec(),
            max_plate_depth_m.spec(), plate_gate_m.spec(), point_sigma_mm.spec(), patch_floor_mm.spec(),
-           depth_step_mm.spec(), correction_sigmas.spec(), window_groups.spec(), localise.spec()},
+           depth_step_mm.spec(), correction_sigmas.spec(), window_groups.spec(),
+           window_iterations.spec(), localise.spec()},
           {}};
 }
 

@@ -63,6 +63,11 @@ inline constexpr ParameterKey<int> window_groups{
     "slam.window_groups", "poses", 12, 2, 1000, 1, Stage::Map, "Window",
     "Pose groups re-estimated after each new frame while the sequence runs (the batch "
     "optimisation at the end re-estimates all)"};
+inline constexpr ParameterKey<int> window_iterations{
+    "slam.window_iterations", "", 3, 1, 50, 1, Stage::Map, "Window iterations",
+    "Solver iterations per new frame while the sequence runs: each frame starts from the "
+    "previous frame's estimate, so a few iterations keep up with the walk at a bounded time "
+    "per frame (the batch optimisation at the end runs to convergence)"};
 }  // namespace slam_keys
 
 struct SlamOptions {
@@ -78,6 +83,7 @@ struct SlamOptions {
   double depth_step_m = mm_to_m(slam_keys::depth_step_mm.default_value);
   double correction_sigmas = slam_keys::correction_sigmas.default_value;
   int window_groups = slam_keys::window_groups.default_value;
+  int window_iterations = slam_keys::window_iterations.default_value;
   bool localise = slam_keys::localise.default_value;
   // Odometry of pose groups that did not move still has this much uncertainty.
   double min_odometry_m = 0.0005;

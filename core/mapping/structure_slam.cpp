@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "core/mapping/slam_patches.h"
+#include "core/solvers/correction_evidence.h"
 
 namespace tunnelmap {
 
@@ -257,10 +258,29 @@ void StructureSlam::solve_window() {
     window.patches.push_back(q);
   }
   PoseGraphOptions po;
-  po.max_iterations = 10;
-  const PoseGraphSolution s = solve_pose_graph(window, po);
+  po.max_iterations = options_.window_iterations;
+  PoseGraphSolution s = solve_pose_graph(window, po);
+  if (options_.correction_sigmas > 0.0) {
+    PoseGraphSolution given = solve_window_at_given_poses(window, from, free_from, po);
+    if (!correction_evidence(given.final_cost, s.final_cost, n - free_from, options_.correction_sigmas).significant)
+      s = std::move(given);
+  }
   for (int g = free_from; g < n; ++g) graph_.poses[static_cast<std::size_t>(g)] = s.poses[static_cast<std::size_t>(g - from)];
   for (std::size_t k = 0; k < planes_used.size(); ++k) graph_.planes[static_cast<std::size_t>(planes_used[k])] = s.planes[k];
+}
+
+// The window's null hypothesis: its free groups where the odometry puts them from the last
+// group held still (every pose held, the landmarks refitted). Exact odometry then stays exact
+// while the walk runs, as it does in the batch (finish()).
+PoseGraphSolution StructureSlam::solve_window_at_given_poses(PoseGraph window, int from, int free_from,
+                                                            const PoseGraphOptions& options) const {
+  for (int g = free_from; g < static_cast<int>(groups_.size()); ++g) {
+    const auto k = static_cast<std::size_t>(g - from);
+    const Eigen::Isometry3d step = groups_[static_cast<std::size_t>(g) - 1].odometry.inverse() * groups_[static_cast<std::size_t>(g)].odometry;
+    window.poses[k] = window.poses[k - 1] * step;
+    window.fixed[k] = true;
+  }
+  return solve_pose_graph(window, options);
 }
 
 PoseCorrection StructureSlam::correction(std::size_t g) const {

@@ -11,7 +11,9 @@
 // to odometry and reported as degenerate.
 //
 // Two modes share the graph: add_frame() re-estimates a window of the latest pose groups
-// (bounded time per frame, for a robot on the move), finish() optimises all of them.
+// (bounded time per frame, for a robot on the move), finish() optimises all of them. Both keep
+// the given poses unless the structure shows, beyond its noise, that they are wrong
+// (core/solvers/correction_evidence.h).
 #include <Eigen/Geometry>
 #include <map>
 #include <utility>
@@ -68,6 +70,8 @@ class StructureSlam {
   int add_plane(const Eigen::Vector3d& normal, double offset);
   void solve_window();
   PoseGraphSolution solve_at_given_poses() const;
+  PoseGraphSolution solve_window_at_given_poses(PoseGraph window, int from, int free_from,
+                                                const PoseGraphOptions& options) const;
   PoseCorrection correction(std::size_t g) const;
 
   SlamOptions options_;

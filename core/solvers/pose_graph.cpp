@@ -76,6 +76,24 @@ struct PatchResidual {
   }
 };
 
+// A patch of a pose held still, in the world: the same residual with the plane as the only
+// unknown (a held window's half, or every pose of the null hypothesis), at a third of the
+// cost of differentiating through the pose as well.
+struct HeldPatchResidual {
+  Eigen::Vector3d centroid;  // world
+  Eigen::Matrix3d spread;    // world
+  double inv_sigma;
+
+  template <typename T>
+  bool operator()(const T* n, const T* d, T* residual) const {
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> N(n);
+    residual[0] = T(inv_sigma) * (N.dot(centroid.cast<T>()) - d[0]);
+    const Eigen::Matrix<T, 3, 1> tilt = spread.transpose().cast<T>() * N;
+    for (int k = 0; k < 3; ++k) residual[1 + k] = T(inv_sigma) * tilt[k];
+    return true;
+  }
+};
+
 void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<PoseBlock>& poses) {
   PoseBlock& a = poses[static_cast<std::size_t>(o.from)];
   PoseBlock& b = poses[static_cast<std::size_t>(o.to)];
@@ -85,13 +103,24 @@ void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<P
   problem.AddResidualBlock(cost, nullptr, a.q, a.t, b.q, b.t);
 }
 
-void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigmas,
+void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigmas, bool pose_held,
                std::vector<PoseBlock>& poses, std::vector<PlaneBlock>& planes) {
-  auto* cost = new ceres::AutoDiffCostFunction<PatchResidual, 4, 4, 3, 3, 1>(
-      new PatchResidual{p.centroid, p.spread, 1.0 / p.sigma_m});
   PoseBlock& pose = poses[static_cast<std::size_t>(p.pose)];
   PlaneBlock& plane = planes[static_cast<std::size_t>(p.plane)];
+  if (pose_held) {
+    const Eigen::Isometry3d T = from_block(pose);
+    auto* cost = new ceres::AutoDiffCostFunction<HeldPatchResidual, 4, 3, 1>(
+        new HeldPatchResidual{T * p.centroid, T.linear() * p.spread, 1.0 / p.sigma_m});
+    problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), plane.n, plane.d);
+    return;
+  }
+  auto* cost = new ceres::AutoDiffCostFunction<PatchResidual, 4, 4, 3, 3, 1>(
+      new PatchResidual{p.centroid, p.spread, 1.0 / p.sigma_m});
   problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, plane.n, plane.d);
+}
+
+bool held(const PoseGraph& graph, int pose) {
+  return pose >= 0 && static_cast<std::size_t>(pose) < graph.fixed.size() && graph.fixed[static_cast<std::size_t>(pose)];
 }
 
 // A plane only one pose sees is free to follow it: it says nothing about the pose.
@@ -131,11 +160,12 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
 
   ceres::Problem problem;
   for (const GraphOdometry& o : graph.odometry) add_odometry(problem, o, poses);
-  for (const PlanePatch& p : graph.patches) add_patch(problem, p, options.robust_sigmas, poses, planes);
+  for (const PlanePatch& p : graph.patches)
+    add_patch(problem, p, options.robust_sigmas, held(graph, p.pose), poses, planes);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(poses[i].q)) continue;
     problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);
-    if (i < graph.fixed.size() && graph.fixed[i]) {
+    if (held(graph, static_cast<int>(i))) {
       problem.SetParameterBlockConstant(poses[i].q);
       problem.SetParameterBlockConstant(poses[i].t);
     }
