@@ -64,10 +64,11 @@ void set_pose_layers(scene::SceneGeometry& g, const MultiScanMap& merged, const 
 
 FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
                              const std::function<void(int, int)>& progress, const std::atomic<bool>& cancel,
-                             bool refine_poses) {
+                             bool refine_poses, const VolumeWatcher& integrated) {
   const int n = static_cast<int>(dataset.frames.size());
   FuseSettings settings;
   settings.refine_poses = refine_poses;
+  settings.integrated = integrated;
   settings.progress = [&](const std::string& stage, int done, int) {
     if (cancel.load()) throw FusionCancelled();
     if (progress) progress(done + (stage == "integrate" ? n : 0), 2 * n);
@@ -108,7 +109,7 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
   auto& g = out.geometry;
   g.cloud = vtkSmartPointer<vtkPolyData>::New();  // no single frame's cloud in the world view
   g.planes = vtkSmartPointer<vtkPolyData>::New();
-  g.mesh = with_level_of_detail(scene::mesh_polydata(mesh));  // a long girder: pieces and overview
+  g.mesh = fused_mesh_polydata(mesh);
   set_pose_layers(g, r.merged, dataset.intrinsics, fused_poses);
   out.given_geometry = g;
   if (out.refined) {
@@ -126,6 +127,10 @@ FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
   out.frusta = static_cast<int>(r.merged.poses.size());
   out.merged = std::move(r.merged);
   return out;
+}
+
+vtkSmartPointer<vtkPolyData> fused_mesh_polydata(const TriangleMesh& mesh) {
+  return with_level_of_detail(scene::mesh_polydata(mesh));  // a long girder: pieces and overview
 }
 
 }  // namespace tunnelmap::ui

@@ -13,6 +13,13 @@
 #include "core/params/parameters.h"
 #include "ui/scene/scene_geometry.h"
 
+namespace tunnelmap {
+// Declared only: their headers bring TBB, whose `emit` clashes with Qt's keyword in the
+// widgets that include this header.
+class SparseTsdfVolume;
+struct TriangleMesh;
+}  // namespace tunnelmap
+
 namespace tunnelmap::ui {
 
 constexpr double kFusedFrustumDepthM = 0.3;  // depth of the drawn camera frusta
@@ -47,11 +54,19 @@ struct FusionCancelled : std::runtime_error {
   FusionCancelled() : std::runtime_error("fusion cancelled") {}
 };
 
+// Told the volume after each frame integrated (FuseSettings::integrated), on the worker.
+using VolumeWatcher = std::function<void(const SparseTsdfVolume& volume, int done, int total)>;
+
 // `progress(done, total)` after each frame of each pass; throws FusionCancelled once `cancel`
 // is set (checked at every progress step). InputError for frames without pose or joints.
-// `refine_poses` false fuses at the given poses (FuseSettings::refine_poses).
+// `refine_poses` false fuses at the given poses (FuseSettings::refine_poses). `integrated`
+// sees the growing volume (the fused view's preview mesh, ui/fusion_preview.h).
 FusedScene build_fused_scene(const Dataset& dataset, const Parameters& params,
                              const std::function<void(int, int)>& progress, const std::atomic<bool>& cancel,
-                             bool refine_poses = true);
+                             bool refine_poses = true, const VolumeWatcher& integrated = {});
+
+// The fused mesh as the 3D view's mesh layer takes it (world frame; a long one in pieces with
+// level of detail): the final mesh and every preview go through here.
+vtkSmartPointer<vtkPolyData> fused_mesh_polydata(const TriangleMesh& mesh);
 
 }  // namespace tunnelmap::ui

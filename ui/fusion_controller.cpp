@@ -9,6 +9,7 @@
 #include "ui/background_job.h"
 #include "ui/frame_controller.h"
 #include "ui/fused_scene.h"
+#include "ui/fusion_preview.h"
 #include "ui/map_summary.h"
 #include "ui/parameter_panel.h"
 #include "ui/results_panel.h"
@@ -62,8 +63,12 @@ QString refinement_summary(const FusedScene& f) {
 }  // namespace
 
 FusionController::FusionController(WindowContext& ctx, FrameController* frames)
-    : QObject(ctx.window), ctx_(ctx), frames_(frames), results_(frames->results()) {
+    : QObject(ctx.window), ctx_(ctx), frames_(frames), results_(frames->results()),
+      preview_(new FusionPreview(ctx, this)) {
   connect(frames_, &FrameController::frameShown, this, &FusionController::leave_fused_view);
+  connect(frames_, &FrameController::frameShown, preview_, &FusionPreview::stop_showing);
+  // The view shows the growing mesh now, not the last fusion (Refined poses would redraw it).
+  connect(preview_, &FusionPreview::previewShown, this, &FusionController::leave_fused_view);
 }
 
 QAction* FusionController::add_fuse_action(QMenu* processing) {
@@ -103,14 +108,16 @@ void FusionController::start_fusion(bool refine_poses) {
   // A fusion at the given poses completes the shown fusion `target` (its mesh for comparison).
   auto target = refine_poses ? nullptr : fused_;
   const std::atomic<bool>& cancel = ctx_.job->cancel_flag();
-  ctx_.job->start([this, source, params, refine_poses, target, &cancel] {
+  // Only the shown fusion grows in the view; a fusion at the given poses is a comparison.
+  const VolumeWatcher watch = refine_poses ? preview_->start(params, *ds) : VolumeWatcher{};
+  ctx_.job->start([this, source, params, refine_poses, target, watch, &cancel] {
     auto fused = std::make_shared<FusedScene>();
     QString error;
     bool cancelled = false;
     try {
       *fused = build_fused_scene(*source->dataset(), params, [this](int done, int) {
         QMetaObject::invokeMethod(this, [this, done] { ctx_.status->set_progress(done); });
-      }, cancel, refine_poses);
+      }, cancel, refine_poses, watch);
     } catch (const FusionCancelled&) {
       cancelled = true;
     } catch (const std::exception& e) {

@@ -1,6 +1,6 @@
 #pragma once
 // Processing > Fuse sequence: the TSDF mesh, merged map and one frustum per arm pose, fused on
-// the background job, shown in the world frame; View > Refined poses switches the frusta, map
+// the background job (the mesh growing in the view meanwhile), shown in the world frame; View > Refined poses switches the frusta, map
 // and mesh between the refined and the forward-kinematics poses (the latter fused once, on
 // demand). Showing a frame leaves the fused view.
 #include <Eigen/Core>
@@ -15,6 +15,7 @@ class QMenu;
 namespace tunnelmap::ui {
 
 class FrameController;
+class FusionPreview;
 class ResultsPanel;
 struct FusedScene;
 struct WindowContext;
@@ -37,6 +38,7 @@ class FusionController : public QObject {
   std::vector<Eigen::Vector3d> fused_frustum_centres() const;
   int fused_frusta() const { return frusta_; }
   long long fused_triangles() const { return triangles_; }
+  FusionPreview* preview() const { return preview_; }  // the growing mesh while fusing
   void forget();  // a new input: the fusion belongs to the previous one
   std::function<void()> stop_live = [] {};
 
@@ -55,6 +57,7 @@ class FusionController : public QObject {
   WindowContext& ctx_;
   FrameController* frames_;
   ResultsPanel* results_;
+  FusionPreview* preview_;
   QAction* refined_action_ = nullptr;
   std::shared_ptr<FusedScene> fused_;  // the last fusion (refined poses when refinement ran)
   bool shown_ = false;                 // the 3D view shows it (not a single frame)

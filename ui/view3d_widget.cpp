@@ -1,6 +1,7 @@
 #include "ui/view3d_widget.h"
 
 #include <QMouseEvent>
+#include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkTextProperty.h>
 
@@ -37,6 +38,20 @@ void View3DWidget::set_mesh(vtkPolyData* mesh) {
 void View3DWidget::finish_update(bool reset_camera) {
   if (reset_camera) scene_.apply_view(scene::ViewPreset::Along);
   else scene_.renderer()->ResetCameraClippingRange();
+  renderWindow()->Render();
+  update();
+}
+
+void View3DWidget::look_like(const Eigen::Isometry3d& camera_to_world) {
+  const Eigen::Vector3d eye = camera_to_world.translation();
+  const Eigen::Vector3d ahead = camera_to_world * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d up = -(camera_to_world.linear() * Eigen::Vector3d::UnitY());  // image y points down
+  vtkCamera* cam = scene_.renderer()->GetActiveCamera();
+  cam->SetPosition(eye.data());
+  cam->SetFocalPoint(ahead.data());
+  cam->SetViewUp(up.data());
+  cam->SetViewAngle(45.0);
+  scene_.renderer()->ResetCameraClippingRange();
   renderWindow()->Render();
   update();
 }

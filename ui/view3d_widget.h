@@ -5,7 +5,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 #include <vector>
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vtkBillboardTextActor3D.h>
 
 #include "ui/scene/processed_frame.h"
@@ -28,6 +28,8 @@ class View3DWidget : public QVTKOpenGLNativeWidget {
   void clear();
   void set_layer_visible(scene::Layer layer, bool visible);
   void apply_view(scene::ViewPreset view);
+  // Looks the way a camera at `camera_to_world` does, from where it stands (world-frame scene).
+  void look_like(const Eigen::Isometry3d& camera_to_world);
 
   // Small screen-facing text labels at world points (e.g. one per camera frustum), shown with
   // the frustum layer; an empty list removes them.

@@ -138,6 +138,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     else
       r.volume->integrate(f, pose);
     if (s.progress) s.progress("integrate", i + 1, n);
+    if (s.integrated && r.volume) s.integrated(*r.volume, i + 1, n);
   }
   if (r.volume && r.volume->block_count() == 0) throw no_depth_error(fo);
   r.timings_ms["integrate"] = ms_since(t1);

@@ -37,6 +37,9 @@ struct FuseSettings {
   int threads = 0;             // TSDF integration threads (0 = all cores, at most 8)
   bool dense = false;          // the dense volume over the data's box instead of the sparse one
   std::function<void(const std::string& stage, int done, int total)> progress;
+  // After each frame integrated into the sparse volume (after `progress`), on the fusing thread
+  // with no integration running: a live view may read the volume (mesh it) without a lock.
+  std::function<void(const SparseTsdfVolume& volume, int done, int total)> integrated;
 };
 
 struct FusionResult {
