@@ -90,10 +90,11 @@ LatticeEdge edge_of(const double* q, const Eigen::Vector3i& first_sample) {
 }
 
 // Turns the lattice-frame vertices and normals into the world frame.
-void to_world(const Eigen::Matrix3d& lattice_to_world, TriangleMesh& mesh) {
-  if (lattice_to_world.isIdentity(0.0)) return;
+void to_world(const Eigen::Matrix3d& lattice_to_world, const Eigen::Vector3d& lattice_origin, TriangleMesh& mesh) {
+  if (lattice_to_world.isIdentity(0.0) && lattice_origin.isZero(0.0)) return;
   const Eigen::Matrix3f R = lattice_to_world.cast<float>();
-  for (Eigen::Vector3f& v : mesh.vertices) v = R * v;
+  const Eigen::Vector3f t = lattice_origin.cast<float>();
+  for (Eigen::Vector3f& v : mesh.vertices) v = R * v + t;
   for (Eigen::Vector3f& n : mesh.normals) n = R * n;
 }
 
@@ -151,7 +152,7 @@ MeshChunk extract_chunk(const SparseTsdfVolume& volume, const Eigen::Vector3i& c
                         poly->GetPoint(id, q);
                         out.vertex_edges.push_back(edge_of(q, first));
                       });
-  to_world(volume.lattice_to_world(), out.mesh);
+  to_world(volume.lattice_to_world(), volume.lattice_origin(), out.mesh);
   out.raw_triangles = st.raw_triangles;
   out.dropped_unseen = st.dropped_unseen;
   return out;

@@ -119,7 +119,9 @@ nlohmann::json volume_json(const FusionResult& r) {
             {"bytes", r.volume->memory_bytes()},
             {"voxel_m", r.volume->voxel_m()},
             {"grid_yaw_deg", r.lattice.yaw_deg},
-            {"grid_heading", heading_source_name(r.lattice.source)}};
+            {"grid_heading", heading_source_name(r.lattice.source)},
+            {"grid_offset_m", vec(r.lattice.offset_m)},
+            {"grid_offset_fit_ms", r.lattice.offset_fit_ms}};
   const VoxelGrid& g = r.dense_volume->grid();
   return {{"kind", "dense"},
           {"blocks", nullptr},

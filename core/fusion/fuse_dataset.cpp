@@ -5,6 +5,7 @@
 
 #include "core/engine/run_engine.h"
 #include "core/fusion/fusion_options.h"
+#include "core/fusion/lattice_offset.h"
 #include "core/mapping/posed_sequence.h"
 #include "core/util/error.h"
 
@@ -30,6 +31,18 @@ std::vector<PosedMap> posed_maps(const std::vector<FusedFrame>& frames) {
   std::vector<PosedMap> out;
   for (const FusedFrame& f : frames) out.push_back({&f.map, f.camera_to_world});
   return out;
+}
+// Moves the lattice by the offset at which a sample of the frames allocates the fewest blocks
+// (fusion.offset_fit_frames of them, every kOffsetFitRowStep-th row).
+void fit_offset(const Dataset& ds, const std::vector<Eigen::Isometry3d>& poses, const FusionOptions& fo,
+                const TsdfOptions& to, LatticeHeading& lattice) {
+  if (fo.offset_fit_frames <= 0) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<PosedDepth> sample;
+  for (const std::size_t i : evenly_spread(poses.size(), static_cast<std::size_t>(fo.offset_fit_frames)))
+    sample.push_back({every_nth_row(ds.load_frame(i), kOffsetFitRowStep), poses[i]});
+  lattice.offset_m = fit_lattice_offset(sample, lattice.lattice_to_world, fo.voxel_m, to).offset_m;
+  lattice.offset_fit_ms = ms_since(t0);
 }
 // Every fused point lies within max_depth of its camera, so cameras further apart than the
 // volume may span plus twice that depth make data too wide to fuse: refused before a frame is
@@ -128,7 +141,9 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
     r.dense_volume = std::make_unique<TsdfVolume>(fusion_grid(posed_depth_box(boxes, poses), fo), to);
   else {
     r.lattice = lattice_heading(posed_maps(r.frames), r.merged.map, ds.up);
-    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo), r.lattice.lattice_to_world);
+    fit_offset(ds, poses, fo, to, r.lattice);
+    r.volume = std::make_unique<SparseTsdfVolume>(fo.voxel_m, to, sparse_volume_limits(fo), r.lattice.lattice_to_world,
+                                                  r.lattice.origin());
   }
   for (int i = 0; i < n; ++i) {
     const DepthFrame f = ds.load_frame(static_cast<std::size_t>(i));

@@ -11,7 +11,7 @@ bool operator==(const FusionOptions& a, const FusionOptions& b) {
   return a.voxel_m == b.voxel_m && a.truncation_m == b.truncation_m && a.min_depth_m == b.min_depth_m &&
          a.max_depth_m == b.max_depth_m && a.max_weight == b.max_weight && a.min_weight == b.min_weight &&
          a.bounds_margin_m == b.bounds_margin_m && a.max_extent_m == b.max_extent_m && a.max_volume_bytes == b.max_volume_bytes &&
-         a.pose_group_m == b.pose_group_m;
+         a.pose_group_m == b.pose_group_m && a.offset_fit_frames == b.offset_fit_frames;
 }
 
 FusionOptions fusion_options(const Parameters& p) {
@@ -27,13 +27,15 @@ FusionOptions fusion_options(const Parameters& p) {
   o.max_extent_m = p.get(max_extent_m);
   o.max_volume_bytes = std::size_t(p.get(max_volume_mb)) << 20;
   o.pose_group_m = mm_to_m(p.get(pose_group_mm));
+  o.offset_fit_frames = p.get(offset_fit_frames);
   return o;
 }
 
 ParameterGroup fusion_parameter_group() {
   using namespace fusion_keys;
   return {{voxel_mm.spec(), truncation_mm.spec(), max_depth_m.spec(), max_weight.spec(), min_weight.spec(),
-           bounds_margin_m.spec(), max_extent_m.spec(), max_volume_mb.spec(), pose_group_mm.spec()},
+           bounds_margin_m.spec(), max_extent_m.spec(), max_volume_mb.spec(), pose_group_mm.spec(),
+           offset_fit_frames.spec()},
           {}};
 }
 

@@ -45,6 +45,10 @@ inline constexpr ParameterKey<int> max_volume_mb{
 inline constexpr ParameterKey<double> pose_group_mm{
     "fusion.pose_group_mm", "mm", 50.0, 1.0, 1000.0, 1.0, Stage::Fusion, "Pose grouping",
     "Consecutive frames whose camera moved less than this (and 5 deg) are one arm pose"};
+inline constexpr ParameterKey<int> offset_fit_frames{
+    "fusion.offset_fit_frames", "", 16, 0, 1000, 1, Stage::Fusion, "Lattice offset fit frames",
+    "Frames (spread evenly over the walk) whose truncation bands choose the sparse lattice's "
+    "offset that allocates the fewest blocks; 0 keeps the lattice's origin at the world's"};
 }  // namespace fusion_keys
 
 struct FusionOptions {
@@ -58,6 +62,7 @@ struct FusionOptions {
   double max_extent_m = fusion_keys::max_extent_m.default_value;
   std::size_t max_volume_bytes = std::size_t(fusion_keys::max_volume_mb.default_value) << 20;
   double pose_group_m = mm_to_m(fusion_keys::pose_group_mm.default_value);
+  int offset_fit_frames = fusion_keys::offset_fit_frames.default_value;
 };
 bool operator==(const FusionOptions& a, const FusionOptions& b);
 inline bool operator!=(const FusionOptions& a, const FusionOptions& b) { return !(a == b); }

@@ -24,6 +24,12 @@ struct LatticeHeading {
   Eigen::Matrix3d lattice_to_world = Eigen::Matrix3d::Identity();
   double yaw_deg = 0.0;  // of the lattice's x about the world vertical
   HeadingSource source = HeadingSource::World;
+  // The lattice's origin moved by this along its own axes (each less than a block), fitted
+  // from the depth data (core/fusion/lattice_offset.h); zero when not fitted.
+  Eigen::Vector3d offset_m = Eigen::Vector3d::Zero();
+  double offset_fit_ms = 0.0;  // what the fit cost
+  // Where the lattice's origin lies in the world.
+  Eigen::Vector3d origin() const { return lattice_to_world * offset_m; }
 };
 
 // Frames' centre-line points further apart than this along the girder give the heading

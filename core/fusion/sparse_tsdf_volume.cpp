@@ -23,8 +23,10 @@ int thread_count(int requested) {
 }  // namespace
 
 SparseTsdfVolume::SparseTsdfVolume(double voxel_m, const TsdfOptions& options,
-                                   const SparseVolumeLimits& limits, const Eigen::Matrix3d& lattice_to_world)
-    : voxel_m_(voxel_m), options_(options), limits_(limits), lattice_to_world_(lattice_to_world) {
+                                   const SparseVolumeLimits& limits, const Eigen::Matrix3d& lattice_to_world,
+                                   const Eigen::Vector3d& lattice_origin)
+    : voxel_m_(voxel_m), options_(options), limits_(limits), lattice_to_world_(lattice_to_world),
+      lattice_origin_(lattice_origin) {
   if (!(voxel_m > 0)) throw ParameterError("fusion: the voxel size must be positive");
   const int threads = thread_count(options.threads);
   if (threads > 1) arena_ = std::make_unique<tbb::task_arena>(threads);
@@ -158,7 +160,7 @@ void SparseTsdfVolume::integrate(const DepthFrame& frame, const Eigen::Isometry3
   if (frame.empty()) return;
   Eigen::Isometry3d camera_to_lattice = Eigen::Isometry3d::Identity();
   camera_to_lattice.linear() = lattice_to_world_.transpose() * camera_to_world.linear();
-  camera_to_lattice.translation() = lattice_to_world_.transpose() * camera_to_world.translation();
+  camera_to_lattice.translation() = lattice_to_world_.transpose() * (camera_to_world.translation() - lattice_origin_);
   allocate_band(frame, camera_to_lattice);
   const FrameProjection fp(frame, options_);
   const Eigen::Isometry3d lattice_to_cam = camera_to_lattice.inverse();

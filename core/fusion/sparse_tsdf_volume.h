@@ -3,8 +3,10 @@
 // truncation band passed (voxel hashing, Niessner et al. 2013), so that memory and time follow
 // the observed surface instead of the bounding box. Voxel (i, j, k) of the lattice has its
 // centre at voxel_m * (i, j, k) in the lattice frame: the world frame turned by
-// `lattice_to_world` (fusion turns it with the girder's heading, so that walls lie along
-// lattice planes and a girder running diagonally in the world costs the same; docs/fusion.md). Each frame allocates the blocks along every valid
+// `lattice_to_world` and moved to `lattice_origin` (fusion turns it with the girder's heading,
+// so that walls lie along lattice planes and a girder running diagonally in the world costs
+// the same, and moves it by less than a block so that the walls' bands cross as few block
+// layers as they can; docs/fusion.md). Each frame allocates the blocks along every valid
 // pixel's truncation band, then updates only those blocks' voxels, with the same per-voxel rule
 // as the dense TsdfVolume (core/fusion/tsdf_update.h). Why blocks in a hash map and not
 // OpenVDB: docs/fusion.md.
@@ -53,7 +55,8 @@ class SparseTsdfVolume {
   // Throws ParameterError when voxel_m is not positive.
   SparseTsdfVolume(double voxel_m, const TsdfOptions& options,
                    const SparseVolumeLimits& limits = SparseVolumeLimits(),
-                   const Eigen::Matrix3d& lattice_to_world = Eigen::Matrix3d::Identity());
+                   const Eigen::Matrix3d& lattice_to_world = Eigen::Matrix3d::Identity(),
+                   const Eigen::Vector3d& lattice_origin = Eigen::Vector3d::Zero());
 
   // Fuses one depth frame (and its registered colour, if any) seen from `camera_to_world`.
   // Throws ParameterError when the new blocks break a limit (the volume is then unchanged
@@ -64,6 +67,8 @@ class SparseTsdfVolume {
   double block_m() const { return voxel_m_ * kBlockSide; }
   const TsdfOptions& options() const { return options_; }
   const Eigen::Matrix3d& lattice_to_world() const { return lattice_to_world_; }
+  // Where the lattice's origin lies in the world.
+  const Eigen::Vector3d& lattice_origin() const { return lattice_origin_; }
   int frames_integrated() const { return frames_; }
 
   std::size_t block_count() const { return blocks_.size(); }
@@ -90,6 +95,7 @@ class SparseTsdfVolume {
   TsdfOptions options_;
   SparseVolumeLimits limits_;
   Eigen::Matrix3d lattice_to_world_;
+  Eigen::Vector3d lattice_origin_;
   std::vector<std::unique_ptr<VoxelBlock>> blocks_;
   // Each block's coordinates again, packed: the per-frame visibility test reads these in one
   // sequential pass instead of visiting every block's 5 KiB (a long girder has 10^5 blocks).

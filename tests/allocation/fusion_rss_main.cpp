@@ -104,7 +104,7 @@ FusedGirder fuse_girder(const Dataset& ds, const Parameters& params, const nlohm
   g.integrate_s = r.timings_ms.at("integrate") / 1000.0;
   {
     SparseTsdfVolume half(r.volume->voxel_m(), r.volume->options(), SparseVolumeLimits(),
-                          r.volume->lattice_to_world());
+                          r.volume->lattice_to_world(), r.volume->lattice_origin());
     for (std::size_t i = 0; i < r.frames.size() / 2; ++i) half.integrate(ds.load_frame(i), r.frames[i].camera_to_world);
     g.half_mib_per_m = mib_per_m(half);
   }

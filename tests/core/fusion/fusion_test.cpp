@@ -178,7 +178,11 @@ TEST_F(SimSequence, SagDegradesTheMeshButNotPerFrameDetection) {
 // The sparse volume against the dense one on the same datasets: the same accuracy bound and
 // a vertex count within 5 %.
 TEST_F(SimSequence, SparseMeshMatchesTheDenseMeshOnTheLabAndSagDatasets) {
-  const Parameters p = test_params();
+  // The sparse lattice at the world's origin, as the dense one's voxels are: the two meshes then
+  // cut the surface at the same places (a fitted offset moves the sag dataset's blurred walls'
+  // mesh by ~3 % within 10 mm either way).
+  Parameters p = test_params();
+  p.set("fusion.offset_fit_frames", 0);
   FuseSettings dense;
   dense.dense = true;
   for (const std::string& path : {exact, sag}) {

@@ -140,7 +140,8 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
       "slam.patch_floor_mm", "slam.depth_step_mm", "slam.correction_sigmas", "slam.window_groups", "slam.window_iterations", "slam.localise",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",
-      "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.max_volume_mb", "fusion.pose_group_mm", "ransac.iterations",
+      "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.max_volume_mb", "fusion.pose_group_mm", "fusion.offset_fit_frames",
+      "ransac.iterations",
       "ransac.sample_step", "ransac.distance_mm", "ransac.max_planes", "ransac.min_plane_points",
       "ransac.max_trials", "ransac.confidence", "qhull.sample_step", "qhull.min_points",
       "qhull.yaw_range_deg", "qhull.tilt_range_deg"};
