@@ -67,8 +67,10 @@ FusionController::FusionController(WindowContext& ctx, FrameController* frames)
       preview_(new FusionPreview(ctx, this)) {
   connect(frames_, &FrameController::frameShown, this, &FusionController::leave_fused_view);
   connect(frames_, &FrameController::frameShown, preview_, &FusionPreview::stop_showing);
-  // The view shows the growing mesh now, not the last fusion (Refined poses would redraw it).
+  // The view shows the growing mesh now, not the last fusion (Refined poses would redraw it),
+  // and the next frame shown puts its own mesh (or none) back in the mesh layer.
   connect(preview_, &FusionPreview::previewShown, this, &FusionController::leave_fused_view);
+  connect(preview_, &FusionPreview::previewShown, this, [this] { frames_->mesh().forget_placement(); });
 }
 
 QAction* FusionController::add_fuse_action(QMenu* processing) {
@@ -131,6 +133,7 @@ void FusionController::finish_fusion(const std::shared_ptr<FusedScene>& fused, c
                                      bool refine_poses, const std::shared_ptr<FusedScene>& target) {
   ctx_.status->hide_progress();
   ctx_.job->finished();
+  if (cancelled || !error.isEmpty()) drop_preview();
   if (cancelled) {
     ctx_.status->set_text(tr("Fusion cancelled"));
     return emit fusionFinished(false);
@@ -221,6 +224,17 @@ std::vector<Eigen::Vector3d> FusionController::fused_frustum_centres() const {
   for (const auto& p : fused_->groups)
     out.push_back((refined_action_->isChecked() ? p.fused_pose : p.given_pose).translation());
   return out;
+}
+
+// A fusion that stops early leaves no partial mesh behind: the view returns to the last
+// fusion, else to the current frame.
+void FusionController::drop_preview() {
+  if (!preview_->on_view()) return;
+  preview_->stop_showing();
+  if (!fused_) return frames_->request_run(true);
+  shown_ = true;
+  refined_action_->setEnabled(fused_->refined);
+  show_fused(false);
 }
 
 void FusionController::leave_fused_view() {

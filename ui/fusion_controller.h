@@ -53,6 +53,7 @@ class FusionController : public QObject {
   void adopt_fusion(const std::shared_ptr<FusedScene>& fused);
   void show_fused(bool reset_camera);  // at the poses View > Refined poses chooses
   void leave_fused_view();
+  void drop_preview();  // after a cancelled or failed fusion
 
   WindowContext& ctx_;
   FrameController* frames_;

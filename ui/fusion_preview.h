@@ -29,6 +29,8 @@ class FusionPreview : public QObject {
   // off).
   VolumeWatcher start(const Parameters& params, const Dataset& dataset);
   void stop_showing() { showing_ = false; }  // a frame is shown: the view is not the fusion's
+  // The 3D view shows a preview of the fusion still (none was replaced by a frame since).
+  bool on_view() const { return showing_ && !shown_.isEmpty(); }
   void set_interval_ms(int ms) { interval_ms_ = ms; }  // 0: after every frame; < 0: off
   // The triangle counts of the previews the last fusion showed, in order.
   const QVector<long long>& shown_triangles() const { return shown_; }

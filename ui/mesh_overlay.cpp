@@ -30,7 +30,9 @@ void MeshOverlay::adopt(vtkSmartPointer<vtkPolyData> world_mesh, int frame) {
 }
 
 void MeshOverlay::follow(const scene::ProcessedFrame* shown, int frame) {
-  if (world_mesh_ && frame != placed_for_) show(world_mesh_, shown, frame);
+  // Without a mesh of its own the layer is still cleared once: another view (a fusion's
+  // growing mesh) may have left its mesh there.
+  if (frame != placed_for_) show(world_mesh_, shown, frame);
 }
 
 }  // namespace tunnelmap::ui

@@ -1,7 +1,9 @@
 // tunnelmap_allocation_count: allocations per frame of each pipeline stage in the steady state
 // (requirement: no allocation per frame). The same few simulated VGA frames run through the
 // Pipeline again and again with one reused FrameResult; after the warm-up rounds every run is
-// counted. Stages are separated with Pipeline::run's `from` argument:
+// counted. The frames' integration into the sparse TSDF volume ("fusion", as `fuse` runs it on
+// all cores) is counted the same way once every block they touch is allocated. Stages are
+// separated with Pipeline::run's `from` argument:
 //   run(from = Tunnel) = tunnel (+ the pipeline's own bookkeeping), run(from = Planes) - that =
 //   planes, and so on. Prints the worst and mean count per frame and stage; exits 1 if a stage
 //   exceeds its --max-STAGE limit (the ctest in CMakeLists.txt sets them), 77 (skipped) when
@@ -11,9 +13,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/fusion/fusion_options.h"
+#include "core/fusion/sparse_tsdf_volume.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/build_paths.h"
@@ -23,12 +28,14 @@ using namespace tunnelmap;
 
 namespace {
 
-const char* const kStages[] = {"cloud", "normals", "planes", "tunnel", "total"};
+const char* const kStages[] = {"cloud", "normals", "planes", "tunnel", "total", "fusion"};
 
 struct Case {
   std::string name;
   Pipeline pipeline;
   std::vector<DepthFrame> frames;
+  std::vector<Eigen::Isometry3d> poses;  // camera to world (the simulator's)
+  std::unique_ptr<SparseTsdfVolume> volume;
 };
 
 Case make_case(const std::string& preset, unsigned seed, std::vector<int> indices,
@@ -39,9 +46,14 @@ Case make_case(const std::string& preset, unsigned seed, std::vector<int> indice
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/" + preset + ".json");
   params.set_from_strings(sets);
-  Case c{preset, Pipeline(params), {}};
+  Case c{preset, Pipeline(params), {}, {}, nullptr};
   c.pipeline.set_world_up(Eigen::Vector3d::UnitZ());
-  for (int i : indices) c.frames.push_back(sim.render(i).frame);
+  for (int i : indices) {
+    c.frames.push_back(sim.render(i).frame);
+    c.poses.push_back(c.frames.back().pose.value_or(Eigen::Isometry3d::Identity()));
+  }
+  const FusionOptions fusion = fusion_options(params);
+  c.volume = std::make_unique<SparseTsdfVolume>(fusion.voxel_m, tsdf_options(fusion));
   return c;
 }
 
@@ -71,6 +83,12 @@ std::map<std::string, Tally> count_frame(const Pipeline& p, const DepthFrame& f,
           {"total", from[0]}};
 }
 
+Tally count_integration(Case& c, std::size_t i) {
+  const alloc::Counts before = alloc::snapshot();
+  c.volume->integrate(c.frames[i], c.poses[i]);
+  return since(before);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -90,7 +108,7 @@ int main(int argc, char** argv) {
       limit[a.substr(6)] = std::atoll(argv[++i]);
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--warmup N] [--rounds N] [--set KEY=VALUE] [--max-cloud|normals|planes|tunnel|total N]\n",
+                   "usage: %s [--warmup N] [--rounds N] [--set KEY=VALUE] [--max-cloud|normals|planes|tunnel|total|fusion N]\n",
                    argv[0]);
       return 2;
     }
@@ -110,7 +128,8 @@ int main(int argc, char** argv) {
     FrameResult result;  // reused across the case's frames and rounds, like a sequence slot
     for (int round = 0; round < warmup + rounds; ++round) {
       for (std::size_t i = 0; i < c.frames.size(); ++i) {
-        const auto counts = count_frame(c.pipeline, c.frames[i], result);
+        auto counts = count_frame(c.pipeline, c.frames[i], result);
+        counts["fusion"] = count_integration(c, i);
         if (round < warmup) continue;
         ++counted;
         for (const auto& [stage, t] : counts) {

@@ -129,10 +129,19 @@ class GuiFusionPreviewTest : public QObject {
     QSignalSpy shown(&w, &MainWindow::frameShown);
     QVERIFY(shown.wait(20000));
     w.fusion()->preview()->set_interval_ms(0);
-    const Fused f = fuse(w, [&](long long) { w.cancel_sequence(); });
+    long long preview_triangles = 0;
+    const Fused f = fuse(w, [&](long long triangles) {
+      preview_triangles = triangles;
+      w.cancel_sequence();
+    });
     QVERIFY(!f.ok);
     QVERIFY2(f.status.contains("cancelled"), qPrintable(f.status));
     QCOMPARE(w.fused_frusta(), 0);
+    // The partial mesh leaves the view: the current frame is shown again.
+    QVERIFY(preview_triangles > 0);
+    QVERIFY(shown.wait(20000));
+    QCOMPARE(w.view3d()->scene().layer_size(Layer::Mesh), 0LL);
+    QVERIFY(!w.fusion()->preview()->on_view());
   }
 };
 

@@ -203,6 +203,15 @@ TEST_F(SimSequence, SparseMeshMatchesTheDenseMeshOnTheLabAndSagDatasets) {
       EXPECT_GE(as.fraction_within, 0.95);  // the bound the dense mesh meets
     }
     EXPECT_LT(rs.volume->memory_bytes(), rd.dense_volume->memory_bytes());
+    // At the defaults (the offset fitted) the mesh keeps the dense mesh's size and bounds.
+    const FusionResult fitted = fuse_dataset(ds, test_params());
+    const TriangleMesh mf = extract_mesh(*fitted.volume, 2);
+    const MeshAccuracy af = mesh_accuracy(mf, truth);
+    std::printf("%s, offset fitted: %zu vertices, %.2f %% within 10 mm\n", path == exact ? "exact" : "sag",
+                mf.vertices.size(), 100 * af.fraction_within);
+    EXPECT_NEAR(double(mf.vertices.size()), double(md.vertices.size()), 0.05 * double(md.vertices.size()));
+    EXPECT_NEAR(af.fraction_within, ad.fraction_within, 0.05);
+    if (path == exact) EXPECT_GE(af.fraction_within, 0.95);
   }
 }
 
