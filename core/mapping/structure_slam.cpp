@@ -199,8 +199,23 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
     p.spread = offset.linear() * patch.spread;
     p.sigma_m = patch.sigma_m;
     graph_.patches.push_back(p);
+    share_systematic_error(pose, plane, patch.sigma_m);
     g.samples += patch.points;
   }
+}
+
+// Frames of one pose group see a plane from (nearly) one place, so its depth's systematic error
+// (the quantisation's steps, the floor) is theirs in common and does not average over them: k
+// frames' patches of one plane together weigh as much as one frame's (each sigma times sqrt(k)).
+// Counted as independent, the ten frames of one arm pose made the evidence test take that
+// common error for a pose error.
+void StructureSlam::share_systematic_error(int pose, int plane, double sigma_m) {
+  SharedView& view = shared_views_[{pose, plane}];
+  if (view.last_frame != frames_) ++view.frames, view.last_frame = frames_;
+  view.patches.push_back(graph_.patches.size() - 1);
+  base_sigma_m_.push_back(sigma_m);
+  const double scale = std::sqrt(static_cast<double>(view.frames));
+  for (std::size_t i : view.patches) graph_.patches[i].sigma_m = base_sigma_m_[i] * scale;
 }
 
 Eigen::Isometry3d StructureSlam::add_frame(const TunnelMap& map, const FrameWalls& walls,

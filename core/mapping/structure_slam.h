@@ -84,6 +84,13 @@ class StructureSlam {
     int plane;
   };
   std::vector<KnownPlate> plates_;
+  void share_systematic_error(int pose, int plane, double sigma_m);
+  struct SharedView {
+    int frames = 0, last_frame = -1;
+    std::vector<std::size_t> patches;  // indices into graph_.patches
+  };
+  std::map<std::pair<int, int>, SharedView> shared_views_;  // (pose group, plane)
+  std::vector<double> base_sigma_m_;                        // per patch, before sharing
   int frames_ = 0;
   double frames_ms_ = 0.0, last_frame_ms_ = 0.0;
 };

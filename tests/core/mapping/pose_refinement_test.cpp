@@ -305,6 +305,25 @@ TEST(PoseRefinement, ExactPosesSeenThroughQuantisedDepthAreKept) {
   for (const PoseCorrection& c : r.groups) EXPECT_LT(c.rotation_deg, 1e-9) << c.group;
 }
 
+TEST(PoseRefinement, FramesOfOneArmPoseShareTheirQuantisationError) {
+  // Five frames from one arm pose see the walls on the same depth steps: together they say no
+  // more about the pose than one of them, and the evidence must not grow fivefold.
+  const QuantisedWalk w = quantised_walk();
+  auto refine_repeated = [&](int repeats) {
+    StructureSlam slam;
+    for (std::size_t i = 0; i < w.maps.size(); ++i)
+      for (int k = 0; k < repeats; ++k) slam.add_frame(w.maps[i], w.walls[i], w.truth[i], w.groups[i]);
+    return slam.finish();
+  };
+  const PoseRefinement once = refine_repeated(1), fivefold = refine_repeated(5);
+  std::printf("evidence: one frame per pose %.1f, five frames per pose %.1f (threshold %.1f)\n", once.evidence.chi2_gain,
+              fivefold.evidence.chi2_gain, fivefold.evidence.threshold);
+  EXPECT_EQ(fivefold.evidence.dof, once.evidence.dof);
+  EXPECT_NEAR(fivefold.evidence.chi2_gain, once.evidence.chi2_gain, 0.02 * once.evidence.chi2_gain + 0.5);
+  EXPECT_TRUE(fivefold.given_poses_kept);
+  for (std::size_t i = 0; i < fivefold.poses.size(); ++i) EXPECT_TRUE(fivefold.poses[i].isApprox(w.truth[i / 5], 1e-9)) << i;
+}
+
 // Each frame's pose as the window estimates it when the frame arrives (the robot on the move).
 std::vector<Eigen::Isometry3d> localise_while_walking(const QuantisedWalk& w, const std::vector<Eigen::Isometry3d>& given,
                                                      SlamOptions options = SlamOptions()) {
