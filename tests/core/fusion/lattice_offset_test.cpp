@@ -14,11 +14,10 @@
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
 #include "core/kinematics/frame_pose.h"
-#include "core/sim/sim_dataset_writer.h"
 #include "mesh/sparse_mesher.h"
 #include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
-#include "tests/support/shared_fixture.h"
+#include "tests/support/shared_sim_walk.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
@@ -28,24 +27,12 @@ namespace {
 // A walk of the field girder over 3 m (4 stops, exact poses), written once per build.
 class OffsetWalk : public ::testing::Test {
  protected:
-  static tunnelmap::testing::SharedFixture shared;
   static std::unique_ptr<Dataset> walk;
 
   static void SetUpTestSuite() {
-    const std::string what = "field, 8 frames, walk 0.5-3.5 m in 4 stops\n" + tunnelmap::testing::test_binary_stamp();
-    shared = tunnelmap::testing::shared_fixture("OffsetWalk", what, [](const std::filesystem::path& dir) {
-      SimConfig c = SimConfig::from_preset("field");
-      c.frames = 8;
-      SimWalk w;
-      w.start_x_m = 0.5;
-      w.end_x_m = 3.5;
-      w.stops = 4;
-      c.walk = w;
-      write_sim_dataset((dir / "walk").string(), c);
-      return std::string();
-    });
-    ASSERT_TRUE(shared.ok()) << shared.error;
-    walk = std::make_unique<Dataset>(read_dataset(shared.file("walk")));
+    std::string error;
+    walk = tunnelmap::testing::shared_sim_walk("OffsetWalk", {"field", 8, 0.5, 3.5, 4}, error);
+    ASSERT_TRUE(walk) << error;
   }
   static void TearDownTestSuite() { walk.reset(); }
 
@@ -75,7 +62,6 @@ class OffsetWalk : public ::testing::Test {
 
   IoTempDir tmp;
 };
-tunnelmap::testing::SharedFixture OffsetWalk::shared;
 std::unique_ptr<Dataset> OffsetWalk::walk;
 
 Eigen::Isometry3d shifted_sideways_and_up(double mm) {

@@ -15,12 +15,11 @@
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
 #include "core/kinematics/frame_pose.h"
-#include "core/sim/sim_dataset_writer.h"
 #include "mesh/sparse_mesher.h"
 #include "mesh/tsdf_mesher.h"
 #include "tests/core/fusion/wall_frame.h"
 #include "tests/support/io_temp_dir.h"
-#include "tests/support/shared_fixture.h"
+#include "tests/support/shared_sim_walk.h"
 
 using namespace tunnelmap;
 using tunnelmap::testing::IoTempDir;
@@ -47,31 +46,18 @@ std::size_t distinct_positions(const TriangleMesh& m) {
 // every test here: tests read it and write into their own folder.
 class SparseWalk : public ::testing::Test {
  protected:
-  static tunnelmap::testing::SharedFixture shared;
   static std::unique_ptr<Dataset> walk;
 
   static void SetUpTestSuite() {
-    const std::string what = "lab, 8 frames, walk 0-3 m in 4 stops\n" + tunnelmap::testing::test_binary_stamp();
-    shared = tunnelmap::testing::shared_fixture("SparseWalk", what, [](const std::filesystem::path& dir) {
-      SimConfig c = SimConfig::from_preset("lab");
-      c.frames = 8;
-      SimWalk w;
-      w.start_x_m = 0.0;
-      w.end_x_m = 3.0;
-      w.stops = 4;
-      c.walk = w;
-      write_sim_dataset((dir / "walk").string(), c);
-      return std::string();
-    });
-    ASSERT_TRUE(shared.ok()) << shared.error;
-    walk = std::make_unique<Dataset>(read_dataset(shared.file("walk")));
+    std::string error;
+    walk = tunnelmap::testing::shared_sim_walk("SparseWalk", {"lab", 8, 0.0, 3.0, 4}, error);
+    ASSERT_TRUE(walk) << error;
   }
   static void TearDownTestSuite() { walk.reset(); }
 
   static Eigen::Isometry3d pose(std::size_t i) { return *resolve_frame_pose(*walk, i).pose; }
   IoTempDir tmp;  // this test's own outputs
 };
-tunnelmap::testing::SharedFixture SparseWalk::shared;
 std::unique_ptr<Dataset> SparseWalk::walk;
 
 }  // namespace
