@@ -248,6 +248,20 @@ Eigen::Vector3d centreline_at(const StationMap& map, const std::vector<Centrelin
 
 }  // namespace
 
+std::vector<double> transverse_plate_stations(const std::vector<PlateView>& views,
+                                              const GirderStructureOptions& options) {
+  std::vector<double> out;
+  for (const auto& group : group_views(views, options.plate_gap_m)) {
+    if (plate_area(group, options.cell_m) < options.min_plate_area_m2) continue;
+    std::vector<double> stations;
+    for (const PlateView* v : group)
+      for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
+    out.push_back(median_of_measured(stations));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
                                        const GirderStructureOptions& options) {
   GirderStructure g;

@@ -76,6 +76,12 @@ struct GirderStructure {
   std::vector<CentrelinePoint> centreline;
 };
 
+// The stations of the plates across the girder that frames saw (views grouped along the axis,
+// each group at least `min_plate_area_m2`), ascending: what a section's joint may hide behind,
+// known before the sections are.
+std::vector<double> transverse_plate_stations(const std::vector<PlateView>& views,
+                                              const GirderStructureOptions& options = {});
+
 // `map` must be finished (stations, sections, frame). Plates are in station order.
 GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
                                        const GirderStructureOptions& options = {});

@@ -4,8 +4,14 @@
 // plate's rim, a far grazing wall, a biased frame) steps with that view. A frame's own sizes on
 // both sides of a joint come from one pose, so the step between them is the girder's. A new
 // section is kept only where single frames of at least `min_poses` pose groups each measure
-// the step themselves (their own sizes on the two sides differ by more than the section
-// change, in the direction of the sections' step); otherwise the two sections are one.
+// the step themselves (their own sizes on the two sides differ, in the direction of the
+// sections' step, by more than half of it); otherwise the two sections are one.
+//
+// A plate across the girder hides each side of it from the other, so a joint at a plate is
+// never seen whole by one frame. There the evidence is the frames' own sizes on each side: at
+// least `min_poses` pose groups on each side measure their side's size (nearer it than the
+// other side's), and no frame that sees the stepping dimension on both sides (through the
+// plate's manhole) sees it stay; the joint is then placed at the plate.
 #include <vector>
 
 #include "core/mapping/station_sections.h"
@@ -19,10 +25,17 @@ struct FrameStationSize {
   double width_m = 0.0, height_m = 0.0;
 };
 
-// `pose_groups[frame]`: the frame's pose group (a frame past its end is a group of its own).
+struct JointEvidence {
+  std::vector<FrameStationSize> views;
+  std::vector<int> pose_groups;     // per frame; a frame past its end is a group of its own
+  std::vector<int> plate_stations;  // plates across the girder, as profile indices, ascending
+  double change_m = 0.012;          // the section change (map.section_change_mm)
+  int min_poses = 2;
+  int plate_reach = 1;  // stations: a plate this far outside the stretch the step lies in still hides it
+};
+
 // `width_m`, `height_m`: the profile that was split (to recompute merged sections' medians).
 SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<double>& width_m,
-                                   const std::vector<double>& height_m, const std::vector<FrameStationSize>& views,
-                                   const std::vector<int>& pose_groups, double change_m, int min_poses = 2);
+                                   const std::vector<double>& height_m, const JointEvidence& evidence);
 
 }  // namespace tunnelmap

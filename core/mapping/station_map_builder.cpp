@@ -520,10 +520,15 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
     w[k] = !std::isnan(d.width_m) ? d.width_m : prof[k].wall_m[0] + prof[k].wall_m[1];
     h[k] = !std::isnan(d.height_m) ? d.height_m : prof[k].wall_m[2] + prof[k].wall_m[3];
   }
-  const SectionSplit split = keep_confirmed_joints(
-      split_sections(w, h, options_.section_change_mm / 1000.0, options_.min_section_stations), w, h,
-      frame_views(k0), pose_groups, options_.section_change_mm / 1000.0);
   const double step = options_.station_step_m;
+  JointEvidence evidence;
+  evidence.views = frame_views(k0);
+  evidence.pose_groups = pose_groups;
+  evidence.change_m = options_.section_change_mm / 1000.0;
+  for (double s : transverse_plate_stations(plates_))
+    evidence.plate_stations.push_back(static_cast<int>(std::floor(s / step)) - k0);
+  const SectionSplit split = keep_confirmed_joints(
+      split_sections(w, h, evidence.change_m, options_.min_section_stations), w, h, evidence);
   const auto deviation = [](double v, const std::optional<double>& design) -> std::optional<double> {
     if (!design || std::isnan(v)) return std::nullopt;
     return (v - *design) * 1000.0;

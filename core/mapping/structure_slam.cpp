@@ -96,9 +96,14 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
                                             const Eigen::Isometry3d& camera_to_world) {
   // The frame's pose error moves its view of a wall along the wall's normal by a shift that
   // changes linearly along the girder (an offset and a heading error): shift(s) = a + b (s - s0).
+  // Opposite walls (left and right, top and bottom) face opposite ways, so one pose error
+  // shifts them by opposite amounts: the line is the first wall's shift, the second's negated.
+  // A wall's layers lie a plate's thickness apart, about as far as a frame's odometry may be
+  // off, so one wall alone cannot tell which layer it sees; the wall opposite can.
   struct Line {
     double a = 0.0, b = 0.0;
   };
+  auto sign = [](const FramePatch* p) { return p->wall % 2 == 0 ? 1.0 : -1.0; };
   double s0 = 0.0;
   for (const FramePatch* p : patches) s0 += p->station_m;
   if (!patches.empty()) s0 /= static_cast<double>(patches.size());
@@ -110,13 +115,21 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
     const GraphPlane& L = graph_.planes[static_cast<std::size_t>(plane)];
     return L.offset - L.normal.dot(camera_to_world * p->centroid);  // the shift that lands p on it
   };
+  auto shift_at = [&](const FramePatch* p, const Line& line) {
+    return sign(p) * (line.a + line.b * (p->station_m - s0));
+  };
+  // The nearest layer within reach: two layers a plate's thickness apart may both be.
   auto layer_near = [&](const FramePatch* p, const Line& line) {
     const std::vector<int>* layers = layers_of(p);
     if (!layers) return -1;
-    const double shift = line.a + line.b * (p->station_m - s0);
-    for (int plane : *layers)
-      if (std::abs(offset_of(p, plane) - shift) <= options_.layer_tolerance_m) return plane;
-    return -1;
+    const double shift = shift_at(p, line);
+    int nearest = -1;
+    double nearest_gap = options_.layer_tolerance_m;
+    for (int plane : *layers) {
+      const double gap = std::abs(offset_of(p, plane) - shift);
+      if (gap <= nearest_gap) nearest_gap = gap, nearest = plane;
+    }
+    return nearest;
   };
   // Candidate lines: no shift, each patch-on-layer shift, and each pair of them far enough
   // apart along the girder to give a heading.
@@ -127,7 +140,7 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
   for (const FramePatch* p : patches)
     if (const std::vector<int>* layers = layers_of(p))
       for (int plane : *layers) {
-        const double shift = offset_of(p, plane);
+        const double shift = sign(p) * offset_of(p, plane);
         if (std::abs(shift) <= options_.max_layer_shift_m) landings.push_back({p->station_m, shift});
       }
   std::vector<Line> lines = {Line{}};
@@ -156,8 +169,7 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
     int plane = layer_near(p, best);
     if (plane < 0) {
       const Eigen::Vector3d normal = camera_to_world.linear() * p->normal;
-      const double shift = best.a + best.b * (p->station_m - s0);
-      plane = add_plane(normal, normal.dot(camera_to_world * p->centroid) + shift);
+      plane = add_plane(normal, normal.dot(camera_to_world * p->centroid) + shift_at(p, best));
       wall_landmarks_[{p->wall, p->band}].push_back(plane);
     }
     planes.push_back(plane);
@@ -181,11 +193,11 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   const double camera_station = g.station_m + g.axis.dot(frame_odometry.translation() - g.odometry.translation());
   const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_);
   std::vector<int> planes(patches.size(), -1);
-  for (int w = 0; w < 4; ++w) {
+  for (int pair = 0; pair < 4; pair += 2) {  // left and right, top and bottom
     std::vector<const FramePatch*> on_wall;
     std::vector<std::size_t> index;
     for (std::size_t k = 0; k < patches.size(); ++k)
-      if (!patches[k].plate && patches[k].wall == w) on_wall.push_back(&patches[k]), index.push_back(k);
+      if (!patches[k].plate && patches[k].wall / 2 == pair / 2) on_wall.push_back(&patches[k]), index.push_back(k);
     const std::vector<int> layers = wall_layers(on_wall, frame_to_world);
     for (std::size_t k = 0; k < index.size(); ++k) planes[index[k]] = layers[k];
   }

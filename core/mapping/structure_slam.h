@@ -63,9 +63,10 @@ class StructureSlam {
   void split_by_information(const PoseInformation& H, const Group& group, PoseCorrection& c) const;
   void add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset);
   int plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world, double camera_station_m);
-  // The layers (zones) of wall landmarks that one wall's patches of a frame land on: the shift
-  // along the wall's normal that lands most of them on known layers (the frame's own pose
-  // error), then each patch on the layer within reach or on a new one. Per patch, its plane.
+  // The layers (zones) of wall landmarks that the patches of a frame's two opposite walls land
+  // on: the shift along the walls' normals that lands most of them on known layers (the frame's
+  // own pose error, opposite on the two walls), then each patch on the nearest layer within
+  // reach or on a new one. Per patch, its plane.
   std::vector<int> wall_layers(const std::vector<const FramePatch*>& patches, const Eigen::Isometry3d& camera_to_world);
   int add_plane(const Eigen::Vector3d& normal, double offset);
   void solve_window();

@@ -161,6 +161,60 @@ TEST(PoseRefinement, RecoversAGroupsPoseErrorFromFourWallsAndAPlate) {
   }
 }
 
+// Side walls of two layers: edge bands (the outer surface) and a middle plate 8 mm proud of
+// them, as a girder's walls are built. `edges`: whether the frame sees the edge bands too.
+SyntheticFrame observe_layered(const Eigen::Isometry3d& T, double x0, double x1, bool edges) {
+  const bool floor_and_roof[4] = {false, false, true, true};
+  SyntheticFrame f = observe(T, x0, x1, floor_and_roof);
+  const bool all[4] = {true, true, true, true};
+  const SyntheticFrame box = observe(T, x0, x1, all);
+  f.map.walls = box.map.walls;
+  const Eigen::Isometry3d inv = T.inverse();
+  constexpr double kProud = 0.008;
+  for (int c = 0; c < 2; ++c)
+    for (double x = x0; x <= x1; x += 0.05)
+      for (double s = 0.05; s < 0.96; s += 0.1) {
+        const bool middle = s > 0.3 && s < 0.7;
+        if (!middle && !edges) continue;
+        const double y = (c == 0 ? 1 : -1) * (kW / 2 - (middle ? kProud : 0.0));
+        WallSample w;
+        w.point = (inv * Eigen::Vector3d(x, y, s * kH)).cast<float>();
+        w.points = 64;
+        w.plane = middle ? 10 + c : 1 + c;
+        w.wall = static_cast<std::uint8_t>(c);
+        w.inset_m = middle ? static_cast<float>(kProud) : 0.0f;
+        f.walls.samples.push_back(w);
+      }
+  return f;
+}
+
+TEST(PoseRefinement, AWallSeenOnlyOnItsMiddlePlateLandsOnThatLayer) {
+  // The first poses see both layers of the side walls; the later ones, 6 mm off sideways (about
+  // what the odometry drifts in a step), see only the middle plates. 6 mm is nearer the edge
+  // layer (8 mm out) minus 2 mm than the middle one on one wall: the wall opposite, shifted
+  // the other way, tells which layer each sees.
+  std::vector<TunnelMap> maps;
+  std::vector<FrameWalls> walls;
+  std::vector<Eigen::Isometry3d> given, truth;
+  std::vector<int> groups;
+  const Eigen::Isometry3d error = perturbation(0, 0, 0, {0.0, 0.006, 0.0});
+  for (int g = 0; g < 5; ++g) {
+    const Eigen::Isometry3d T = camera_at(0.25 * g, 0.02, 0.6);
+    SyntheticFrame f = observe_layered(T, 0.5 + 0.25 * g, 3.0 + 0.25 * g, g < 2);
+    maps.push_back(f.map);
+    walls.push_back(f.walls);
+    truth.push_back(T);
+    given.push_back(g < 2 ? T : error * T);
+    groups.push_back(g);
+  }
+  const PoseRefinement r = refine(maps, walls, given, groups);
+  ASSERT_TRUE(r.ran);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_LT((r.poses[i].translation() - truth[i].translation()).norm(), 0.001);
+  }
+}
+
 TEST(PoseRefinement, StationsAreArcLengthAlongACurvingWalk) {
   // A walk along a horizontal curve of 30 m radius (0.67 rad over 20 m): each frame sees the
   // girder straight ahead of it. Measured along the first frame's axis, the last station would
