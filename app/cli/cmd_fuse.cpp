@@ -274,7 +274,8 @@ void run(const FuseOptions& o, CliContext& ctx) {
                        {"camera_to_world", isometry_to_json(p.camera_to_world)},
                        {"refinement", refinement_json(correction_of(r.refinement, p.group))}});
     nlohmann::json sections = nlohmann::json::array();  // as in `map --json`
-    for (const Section& sec : r.stations.sections) sections.push_back(section_json(sec, r.stations.options));
+    for (const Section& sec : r.stations.sections)
+      sections.push_back(section_json(sec, r.stations.options, sections.empty()));
     nlohmann::json doc = header;
     doc.update({
         {"volume", volume_doc},

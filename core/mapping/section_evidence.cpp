@@ -155,7 +155,8 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
       // plate is gone once the sides are whole.
       const int joint = std::clamp((hidden->last_a + hidden->first_b + 1) / 2, last.first + 1, run.last);
       const SectionRun before = with_medians(last.first, joint - 1, out, width_m, height_m);
-      const SectionRun after = with_medians(joint, run.last, out, width_m, height_m);
+      SectionRun after = with_medians(joint, run.last, out, width_m, height_m);
+      after.unseen_joint_stations = hidden->first_b - hidden->last_a - 1;
       if (differ(before, after, e.change_m)) {
         last = before;
         out.sections.push_back(after);
@@ -169,9 +170,12 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
   SectionSplit merged;
   merged.outlier = out.outlier;
   for (const SectionRun& run : out.sections) {
-    if (!merged.sections.empty() && !differ(merged.sections.back(), run, e.change_m))
-      merged.sections.back() = with_medians(merged.sections.back().first, run.last, out, width_m, height_m);
-    else
+    if (!merged.sections.empty() && !differ(merged.sections.back(), run, e.change_m)) {
+      SectionRun& last = merged.sections.back();
+      const int unseen = last.unseen_joint_stations;
+      last = with_medians(last.first, run.last, out, width_m, height_m);
+      last.unseen_joint_stations = unseen;
+    } else
       merged.sections.push_back(run);
   }
   return merged;

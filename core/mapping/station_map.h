@@ -38,6 +38,10 @@ struct Section {
   double from_m = 0.0, to_m = 0.0;
   double width_m = 0.0, height_m = 0.0;
   int frames = 0;  // frames that measured any of its stations
+  // Its joint with the section before (none for the first): seen whole by frames, or placed in
+  // the middle of a stretch a plate hid; how far from `from_m` the joint may lie.
+  bool joint_seen = true;
+  double joint_uncertainty_m = 0.0;
 };
 
 struct StationMap {

@@ -560,6 +560,9 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
       for (const Piece& p : it->second) frames.push_back(p.frame);
     std::sort(frames.begin(), frames.end());
     sec.frames = static_cast<int>(std::unique(frames.begin(), frames.end()) - frames.begin());
+    // A seen step lies within one station of its first; an unseen one anywhere in its stretch.
+    sec.joint_seen = run.unseen_joint_stations < 0;
+    sec.joint_uncertainty_m = sec.joint_seen ? step : 0.5 * (run.unseen_joint_stations + 1) * step;
     out.sections.push_back(sec);
     add_section_maps(line_, wall_pos, sec.from_m, sec.to_m, tunnel_.forbidden_band_m, out.section_maps);
 

@@ -9,6 +9,9 @@ namespace tunnelmap {
 struct SectionRun {
   int first = 0, last = 0;  // station indices, inclusive
   double width_m = 0.0, height_m = 0.0;  // medians of the accepted measured stations (NaN: none)
+  // Where its joint with the section before lies unseen (a plate hid it): the stretch's length
+  // in stations, the joint in its middle; -1 where frames saw the step.
+  int unseen_joint_stations = -1;
 };
 
 struct SectionSplit {

@@ -39,12 +39,17 @@ nlohmann::json station_json(const Station& s) {
           {"out_of_tolerance", s.out_of_tolerance}};
 }
 
-nlohmann::json section_json(const Section& s, const StationMapOptions& o) {
+nlohmann::json section_json(const Section& s, const StationMapOptions& o, bool first) {
   nlohmann::json j = {{"from_m", round_to(s.from_m, 1e-4)},
                       {"to_m", round_to(s.to_m, 1e-4)},
                       {"width_m", number_or_null(s.width_m, 1e-5)},
                       {"height_m", number_or_null(s.height_m, 1e-5)},
                       {"frames", s.frames}};
+  // The joint at from_m: "seen" (frames measured the step themselves) or "between_views" (a
+  // plate hid it: placed in the middle of the stretch nothing measured); null for the first.
+  j["joint"] = first ? nlohmann::json(nullptr)
+                     : nlohmann::json{{"source", s.joint_seen ? "seen" : "between_views"},
+                                      {"uncertainty_m", round_to(s.joint_uncertainty_m, 1e-3)}};
   j["width_dev_mm"] = o.design_width_m && std::isfinite(s.width_m)
                           ? number_or_null((s.width_m - *o.design_width_m) * 1000.0, 0.01)
                           : nlohmann::json(nullptr);
@@ -74,7 +79,7 @@ nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& p
   nlohmann::json stations = nlohmann::json::array(), sections = nlohmann::json::array(),
                  poses = nlohmann::json::array();
   for (const Station& s : m.stations) stations.push_back(station_json(s));
-  for (const Section& s : m.sections) sections.push_back(section_json(s, m.options));
+  for (const Section& s : m.sections) sections.push_back(section_json(s, m.options, sections.empty()));
   int rescans = 0;
   for (const PoseGroupStatus& p : m.poses) {
     rescans += p.rescan ? 1 : 0;

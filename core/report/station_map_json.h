@@ -11,7 +11,9 @@ namespace tunnelmap {
 // {"station_m","width_m","height_m","width_source","height_source","frames","width_dev_mm",
 //  "height_dev_mm","out_of_tolerance"}: values null where unknown.
 nlohmann::json station_json(const Station& s);
-nlohmann::json section_json(const Section& s, const StationMapOptions& o);
+// {"from_m","to_m","width_m","height_m","frames","joint","width_dev_mm","height_dev_mm"};
+// "joint" (the one at from_m) is null for the first section, `first`.
+nlohmann::json section_json(const Section& s, const StationMapOptions& o, bool first);
 
 // The whole document: {"tool","version","input","params","station_step_m","design",
 // "tolerance_mm","frame","stations","sections","poses","frames","summary"}. `frames`: the

@@ -49,6 +49,7 @@ TEST(SectionEvidence, AStepTwoPoseGroupsMeasureInTheirOwnFramesIsAJoint) {
   const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 0, 1}));
   ASSERT_EQ(kept.sections.size(), 2u);
   EXPECT_EQ(kept.sections[1].first, 10);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, -1);  // seen whole
   EXPECT_NEAR(kept.sections[1].width_m, 0.83, 1e-9);
 }
 
@@ -121,6 +122,7 @@ TEST(SectionEvidence, AJointAPlateHidesIsKeptWhenPoseGroupsOnEachSideMeasureThei
   const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views_either_side_of_a_plate(), {0, 1, 2, 3}, {8}));
   ASSERT_EQ(kept.sections.size(), 2u);
   EXPECT_EQ(kept.sections[1].first, 9);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, 3);  // 8-10
   EXPECT_NEAR(kept.sections[0].width_m, 0.80, 1e-9);
   EXPECT_NEAR(kept.sections[1].width_m, 0.83, 1e-9);
 }
