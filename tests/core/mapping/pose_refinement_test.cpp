@@ -190,9 +190,9 @@ SyntheticFrame observe_layered(const Eigen::Isometry3d& T, double x0, double x1,
 
 TEST(PoseRefinement, AWallSeenOnlyOnItsMiddlePlateLandsOnThatLayer) {
   // The first poses see both layers of the side walls; the later ones, 6 mm off sideways (about
-  // what the odometry drifts in a step), see only the middle plates. 6 mm is nearer the edge
-  // layer (8 mm out) minus 2 mm than the middle one on one wall: the wall opposite, shifted
-  // the other way, tells which layer each sees.
+  // what the odometry drifts in a step), see only the middle plates. On one wall that view lies
+  // 2 mm from the edge layer and 6 mm from the middle one, so alone it would take the edge
+  // layer; the wall opposite, shifted the other way, tells which layer each sees.
   std::vector<TunnelMap> maps;
   std::vector<FrameWalls> walls;
   std::vector<Eigen::Isometry3d> given, truth;
