@@ -1,5 +1,6 @@
 #include "core/mapping/slam_options.h"
 
+#include "core/normals/cloud_options.h"
 #include "core/params/parameters.h"
 
 namespace tunnelmap {
@@ -14,7 +15,8 @@ bool operator==(const SlamOptions& a, const SlamOptions& b) {
          a.min_odometry_m == b.min_odometry_m && a.min_odometry_deg == b.min_odometry_deg &&
          a.min_patch_points == b.min_patch_points && a.layer_tolerance_m == b.layer_tolerance_m &&
          a.max_layer_shift_m == b.max_layer_shift_m && a.max_layer_slope == b.max_layer_slope &&
-         a.degenerate_ratio == b.degenerate_ratio && a.localise == b.localise;
+         a.degenerate_ratio == b.degenerate_ratio && a.localise == b.localise &&
+         a.cloud_max_range_m == b.cloud_max_range_m;
 }
 
 SlamOptions slam_options(const Parameters& p) {
@@ -33,6 +35,7 @@ SlamOptions slam_options(const Parameters& p) {
   o.window_groups = p.get(slam_keys::window_groups);
   o.window_iterations = p.get(slam_keys::window_iterations);
   o.localise = p.get(slam_keys::localise);
+  o.cloud_max_range_m = p.get(cloud_keys::max_range_m);
   return o;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of localisation and mapping against the girder's structure (slam.*), declared
 // once, and the options StructureSlam takes. See docs/tunnel-map.md.
+#include "core/normals/cloud_options.h"
 #include "core/params/parameter_key.h"
 
 namespace tunnelmap {
@@ -85,6 +86,8 @@ struct SlamOptions {
   int window_groups = slam_keys::window_groups.default_value;
   int window_iterations = slam_keys::window_iterations.default_value;
   bool localise = slam_keys::localise.default_value;
+  // cloud.max_range_m: depth beyond it never reaches a plate, so a plate near it is biased.
+  double cloud_max_range_m = cloud_keys::max_range_m.default_value;
   // Odometry of pose groups that did not move still has this much uncertainty.
   double min_odometry_m = 0.0005;
   double min_odometry_deg = 0.01;

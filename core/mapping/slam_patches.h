@@ -20,6 +20,7 @@ struct FramePatch {
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();    // in-plane square-root scatter
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // camera frame: walls outward, plates forward
   double sigma_m = 0.0;
+  double pixel_sigma_m = 0.0;  // one pixel's depth noise: the sensor model or the patch's scatter
   int points = 0;
 };
 
