@@ -90,23 +90,34 @@ StagedFolder::~StagedFolder() {
 
 void StagedFolder::commit() {
   write_manifest(staging_);
-  std::error_code ec;
   fs::path old;
-  if (replace_) {
-    old = sibling_name(target_, ".", ".old-" + unique_suffix(), false);
-    fs::rename(target_, old, ec);
-    if (ec) throw InputError(target_.string(), "cannot replace the folder: " + ec.message());
-  } else if (is_empty_folder(target_)) {
-    fs::remove(target_, ec);
-  }
-  fs::rename(staging_, target_, ec);
-  if (ec) {
-    const std::string why = ec.message();
-    if (!old.empty()) fs::rename(old, target_, ec);  // put the old folder back
-    throw InputError(target_.string(), "cannot move the written folder into place: " + why);
-  }
+  std::string failure;
+  // The folder moves into place whole or not at all, and never once an interrupt has come.
+  TempRegistry::publish(created_.empty() ? staging_ : created_, [&] {
+    std::error_code ec;
+    if (replace_) {
+      old = sibling_name(target_, ".", ".old-" + unique_suffix(), false);
+      fs::rename(target_, old, ec);
+      if (ec) {
+        failure = "cannot replace the folder: " + ec.message();
+        old.clear();
+        return false;
+      }
+    } else if (is_empty_folder(target_)) {
+      fs::remove(target_, ec);
+    }
+    fs::rename(staging_, target_, ec);
+    if (ec) {
+      failure = "cannot move the written folder into place: " + ec.message();
+      if (!old.empty()) fs::rename(old, target_, ec);  // put the old folder back
+      old.clear();
+      return false;
+    }
+    return true;
+  });
+  if (!failure.empty()) throw InputError(target_.string(), failure);
   committed_ = true;
-  TempRegistry::remove(created_.empty() ? staging_ : created_);
+  std::error_code ec;
   if (!old.empty()) fs::remove_all(old, ec);
 }
 

@@ -31,7 +31,10 @@ void write_path_atomically(const std::string& path,
     TempRegistry::create(tmp, [&] { write(tmp); });
     if (!fs::exists(tmp)) throw InputError(path, "cannot write: the writer produced no file");
     std::error_code ec;
-    fs::rename(tmp, target, ec);
+    TempRegistry::publish(tmp, [&] {
+      fs::rename(tmp, target, ec);
+      return !ec;
+    });
     if (ec) throw InputError(path, "cannot write: " + ec.message());
   } catch (...) {
     std::error_code ignored;
@@ -39,7 +42,6 @@ void write_path_atomically(const std::string& path,
     TempRegistry::remove(tmp);
     throw;
   }
-  TempRegistry::remove(tmp);
 }
 
 void write_file_atomically(const std::string& path,

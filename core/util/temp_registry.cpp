@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 namespace tunnelmap {
@@ -105,6 +106,19 @@ void TempRegistry::create(const fs::path& path, const std::function<void()>& mak
 
 void TempRegistry::remove(const fs::path& path) {
   const std::lock_guard<std::mutex> lock(registry_mutex());
+  auto& paths = live_paths();
+  const auto it = paths.find(fs::absolute(path));
+  if (it != paths.end()) paths.erase(it);
+}
+
+void TempRegistry::publish(const fs::path& path, const std::function<bool()>& publish) {
+  std::unique_lock<std::mutex> lock(registry_mutex());
+  Creations& c = creations();
+  if (c.interrupted) {
+    if (creating_depth > 0) throw std::runtime_error("interrupted");
+    c.done.wait(lock, [] { return false; });  // the cleanup removes `path` and exits
+  }
+  if (!publish()) return;
   auto& paths = live_paths();
   const auto it = paths.find(fs::absolute(path));
   if (it != paths.end()) paths.erase(it);

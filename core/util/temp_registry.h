@@ -22,6 +22,12 @@ namespace TempRegistry {
 // a new creation (outside a running `make`) waits for the exit instead of starting.
 void create(const std::filesystem::path& path, const std::function<void()>& make);
 void remove(const std::filesystem::path& path);  // call once it is renamed into place or deleted
+// Runs `publish`, which renames the finished temporary `path` into place and returns whether
+// it did, and then forgets `path`, unless an interrupt has come: an interrupt's cleanup and a
+// publish never overlap, so an interrupted run never replaces an earlier output. After an
+// interrupt it waits for the exit (nested in a running creation, it throws instead, so that
+// the creation ends).
+void publish(const std::filesystem::path& path, const std::function<bool()>& publish);
 }  // namespace TempRegistry
 
 // Call first thing in main(), before any thread starts (threads inherit the blocked signals).

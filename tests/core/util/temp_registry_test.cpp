@@ -1,5 +1,6 @@
 // An interrupt that comes between a temporary's registration and its creation: the cleanup waits
-// for the creation, so the path never appears after the sweep. Run in a child process, since the
+// for the creation, so the path never appears after the sweep; and a finished temporary is
+// never renamed over an earlier output once an interrupt has come. Run in a child process, since the
 // cleanup ends the process.
 #include "core/util/temp_registry.h"
 
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
 
 #include "tests/support/io_temp_dir.h"
@@ -64,6 +66,39 @@ TEST(TempRegistry, ACreationAfterAnInterruptWaitsForTheExit) {
   });
   EXPECT_EQ(status, 128 + SIGTERM);
   EXPECT_FALSE(fs::exists(file));
+}
+
+TEST(TempRegistry, AnInterruptNeverLetsARunReplaceAnEarlierOutput) {
+  // A temporary is written whole; then the signal comes while another thread still creates its
+  // own, which the cleanup waits for. Renamed over the earlier output during that wait, the
+  // finished temporary would escape the sweep: the interrupted run would replace the output.
+  testing::IoTempDir tmp;
+  const fs::path target = tmp.path() / "report.pdf", file = tmp.path() / "report.tmp-3.pdf";
+  const fs::path other = tmp.path() / "mesh.tmp-4.ply";
+  std::ofstream(target) << "old";
+  const int status = run_in_child([&] {
+    TempRegistry::create(file, [&] { std::ofstream(file) << "new"; });
+    std::thread([&] {
+      TempRegistry::create(other, [&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(600));
+        std::ofstream(other) << "mesh";
+      });
+    }).detach();
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    kill(getpid(), SIGTERM);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the cleanup waits for `other`
+    TempRegistry::publish(file, [&] {
+      fs::rename(file, target);
+      return true;
+    });
+    std::this_thread::sleep_for(std::chrono::seconds(10));
+  });
+  EXPECT_EQ(status, 128 + SIGTERM);
+  std::string text;
+  std::ifstream(target) >> text;
+  EXPECT_EQ(text, "old");
+  EXPECT_FALSE(fs::exists(file));
+  EXPECT_FALSE(fs::exists(other));
 }
 
 }  // namespace
