@@ -104,11 +104,17 @@ void TempRegistry::create(const fs::path& path, const std::function<void()>& mak
   make();
 }
 
-void TempRegistry::remove(const fs::path& path) {
-  const std::lock_guard<std::mutex> lock(registry_mutex());
+namespace {
+void forget(const fs::path& path) {  // the caller holds registry_mutex()
   auto& paths = live_paths();
   const auto it = paths.find(fs::absolute(path));
   if (it != paths.end()) paths.erase(it);
+}
+}  // namespace
+
+void TempRegistry::remove(const fs::path& path) {
+  const std::lock_guard<std::mutex> lock(registry_mutex());
+  forget(path);
 }
 
 void TempRegistry::publish(const fs::path& path, const std::function<bool()>& publish) {
@@ -118,10 +124,7 @@ void TempRegistry::publish(const fs::path& path, const std::function<bool()>& pu
     if (creating_depth > 0) throw std::runtime_error("interrupted");
     c.done.wait(lock, [] { return false; });  // the cleanup removes `path` and exits
   }
-  if (!publish()) return;
-  auto& paths = live_paths();
-  const auto it = paths.find(fs::absolute(path));
-  if (it != paths.end()) paths.erase(it);
+  if (publish()) forget(path);
 }
 
 void install_interrupt_cleanup(const std::string& program) {
