@@ -26,15 +26,26 @@ std::vector<double> walk_positions(const std::vector<CentreSample>& samples, con
   return t;
 }
 
+// A node's fit is trusted only when its point is within twice one frame's centre noise, and its
+// direction as certain as two centres this far apart make it: the frames of one stop lie
+// millimetres apart, and a slope fitted across them alone is their noise over those
+// millimetres (nodes stood a metre off where the frames near a plate leave a stretch
+// unmeasured). A quadratic bridging such a stretch from both sides passes (its point within
+// about 1.5 centres' noise); one fitted to two stops does not (thousands).
+constexpr double kMaxPointVariance = 4.0;  // in units of one centre's variance
+constexpr double kMinDirectionBaseM = 0.5;
+
 // The node at walk position `tau`: a weighted local quadratic (linear where the samples do not
 // support a quadratic) of the centres against their positions; its value is the point, its
 // slope the axis. Tricube weights fade the window's ends, so nodes move smoothly. False when
-// the window holds too few samples.
+// the samples in the window support not even a line.
 bool fit_node(const std::vector<CentreSample>& samples, const std::vector<double>& t,
               const std::vector<Eigen::Vector3d>& axes, double tau, double window, CentrelineFrame& node) {
   for (const int degree : {2, 1}) {
     const int k = degree + 1;
-    Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), B = Eigen::Matrix3d::Zero();
+    // A: the weighted normal matrix; W2: the same with squared weights, so that A^-1 W2 A^-1 is
+    // the fit's covariance in units of one centre's variance.
+    Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), W2 = Eigen::Matrix3d::Zero(), B = Eigen::Matrix3d::Zero();
     Eigen::Vector3d up = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const double d = t[i] - tau;
@@ -43,13 +54,18 @@ bool fit_node(const std::vector<CentreSample>& samples, const std::vector<double
       const double w = r * r * r;
       const Eigen::Vector3d phi(1.0, d, d * d);
       A.topLeftCorner(k, k) += w * phi.head(k) * phi.head(k).transpose();
+      W2.topLeftCorner(k, k) += w * w * phi.head(k) * phi.head(k).transpose();
       B.topRows(k) += w * phi.head(k) * samples[i].point.transpose();
       up += w * samples[i].up;
       axis += w * axes[i];
     }
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(A.topLeftCorner(k, k));
     if (lu.rank() < k) continue;
-    const Eigen::MatrixXd X = lu.solve(B.topRows(k));
+    const Eigen::MatrixXd Ainv = lu.inverse();
+    const Eigen::MatrixXd covariance = Ainv * W2.topLeftCorner(k, k) * Ainv;
+    const double max_slope_variance = 2.0 / (kMinDirectionBaseM * kMinDirectionBaseM);
+    if (!(covariance(0, 0) <= kMaxPointVariance) || !(covariance(1, 1) <= max_slope_variance)) continue;
+    const Eigen::MatrixXd X = Ainv * B.topRows(k);
     const Eigen::Vector3d slope = X.row(1).transpose();
     node.point = X.row(0).transpose();
     node.axis = slope.norm() > 0.5 ? slope.normalized() : axis.normalized();
