@@ -82,6 +82,29 @@ void walls_near(const StationMap& map, double s, double half, double out[4]) {
   }
 }
 
+// The area of a plate's views that lies inside both cross-sections beside it: each wall at the
+// nearer of its positions just before and just after the plate, `cell` in from it. A step face
+// where the section changes lies between the two sections' walls, outside this box; a plate
+// across the girder fills it, however little of the plate the frames saw (one seen only
+// through the opening of a plate before it). NaN when a wall was measured on neither side.
+double area_inside_both_sections(const StationMap& map, const std::vector<const PlateView*>& group, double s,
+                                 double cell) {
+  const double side = 0.3;  // how far along the girder each side's walls are taken
+  double before[4], after[4], inner[4];
+  walls_near(map, s - side, side, before);
+  walls_near(map, s + side, side, after);
+  for (int c = 0; c < 4; ++c) {
+    inner[c] = std::fmin(before[c], after[c]) - cell;
+    if (std::isnan(inner[c])) return kNaN;
+  }
+  std::set<std::pair<long, long>> cells;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& p : v->samples)
+      if (p.y() < inner[0] && -p.y() < inner[1] && p.z() < inner[2] && -p.z() < inner[3])
+        cells.insert({std::lround(std::floor(p.y() / cell)), std::lround(std::floor(p.z() / cell))});
+  return static_cast<double>(cells.size()) * cell * cell;
+}
+
 const Section* section_at(const StationMap& map, double s) {
   for (const Section& sec : map.sections)
     if (s >= sec.from_m && s < sec.to_m) return &sec;
@@ -154,9 +177,11 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     const double box = sec && std::isfinite(sec->width_m) && std::isfinite(sec->height_m)
                            ? sec->width_m * sec->height_m
                            : kNaN;
-    // A ring where the cross-section steps, or a small face across the axis, is no plate.
+    // A ring where the cross-section steps, or a small face across the axis, is no plate; nor
+    // is a face that closes little of the section, unless it lies inside the section.
     const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
-    if (d.area_m2 < needed) continue;
+    if (d.area_m2 < needed && !(area_inside_both_sections(map, group, d.station_m, o.cell_m) >= o.min_plate_area_m2))
+      continue;
     const Eigen::Vector3d n = plate_normal(group);
     const CentrelineFrame f = map.frame_at(d.station_m);  // the map coordinates' directions there
     d.normal = (n.x() * f.axis + n.y() * f.left() + n.z() * f.up).normalized();

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/mapping/girder_structure.h"
+#include "core/mapping/station_map.h"
 #include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/shared_cli_fixture.h"
@@ -120,6 +122,66 @@ TEST_F(GirderWalk, ThePlyMapHoldsEachPlateWithItsOpening) {
   const std::string ply = slurp(shared.file("map.ply"));
   const std::string head = ply.substr(0, ply.find("end_header"));
   EXPECT_NE(head.find("comment plates 3\n"), std::string::npos) << head;
+}
+
+
+// A straight map, stations every 0.1 m over 8 m: a 0.90 x 1.20 m section up to station 6, then
+// 0.80 x 1.10 m (a 50 mm step on every wall).
+StationMap two_section_map() {
+  StationMap m;
+  m.ok = true;
+  m.line = Centreline::straight(m.origin, m.axis, m.up);
+  for (int k = 0; k < 80; ++k) {
+    Station st;
+    st.station_m = 0.05 + 0.1 * k;
+    const double half_w = st.station_m < 6.0 ? 0.45 : 0.40, half_h = st.station_m < 6.0 ? 0.60 : 0.55;
+    st.width_m = 2 * half_w, st.height_m = 2 * half_h;
+    st.width_source = st.height_source = DimensionSource::Measured;
+    st.frames = 3;
+    st.wall_m[0] = st.wall_m[1] = half_w;
+    st.wall_m[2] = st.wall_m[3] = half_h;
+    m.stations.push_back(st);
+  }
+  m.sections = {{0.0, 6.0, 0.90, 1.20}, {6.0, 8.0, 0.80, 1.10}};
+  return m;
+}
+
+// One frame's view of a face across the girder at `station`: samples every 2.5 cm where `keep`.
+template <typename Keep>
+PlateView face_view(int frame, double station, Keep keep) {
+  PlateView v;
+  v.frame = frame;
+  for (double y = -0.45; y <= 0.45; y += 0.025)
+    for (double z = -0.60; z <= 0.60; z += 0.025)
+      if (keep(y, z)) v.samples.push_back({station, y, z}), v.weights.push_back(64);
+  return v;
+}
+
+TEST(GirderPlates, APlateSeenOnlyThroughTheOpeningBeforeItIsStillAPlate) {
+  // A diaphragm at 3 m with a 0.5 x 0.7 m elliptic manhole, and a second plate 0.5 m behind it
+  // that the frames saw only through that opening: 0.45 x 0.40 m of it, 0.18 m2 (15 % of the
+  // section). A ring where the section steps at 6 m covers 0.19 m2 between the two sections'
+  // walls. The first two are plates, the ring is not.
+  const StationMap map = two_section_map();
+  const auto in_manhole = [](double y, double z) { return std::pow(y / 0.25, 2) + std::pow(z / 0.35, 2) < 1.0; };
+  std::vector<PlateView> views;
+  for (int f = 0; f < 2; ++f) {
+    views.push_back(face_view(f, 3.0, [&](double y, double z) { return !in_manhole(y, z); }));
+    views.push_back(face_view(f, 3.5, [](double y, double z) { return std::abs(y) < 0.22 && z > -0.35 && z < 0.05; }));
+    views.push_back(face_view(f, 6.0, [](double y, double z) { return std::abs(y) > 0.40 || std::abs(z) > 0.55; }));
+  }
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 2u);
+  EXPECT_NEAR(g.diaphragms[0].station_m, 3.0, 1e-9);
+  EXPECT_NEAR(g.diaphragms[1].station_m, 3.5, 1e-9);
+  EXPECT_LT(g.diaphragms[1].area_m2, 0.3 * 0.90 * 1.20);  // too little of the section by itself
+}
+
+TEST(GirderPlates, AFaceInsideTheSectionMustStillBeAsLargeAsAPlate) {
+  // A 0.25 x 0.25 m face in the middle of the passage (a bracket, a stiffener's end): 0.06 m2.
+  const StationMap map = two_section_map();
+  std::vector<PlateView> views{face_view(0, 2.0, [](double y, double z) { return std::abs(y) < 0.125 && std::abs(z) < 0.125; })};
+  EXPECT_TRUE(build_girder_structure(map, views).diaphragms.empty());
 }
 
 }  // namespace
