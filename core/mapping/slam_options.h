@@ -23,6 +23,12 @@ inline constexpr ParameterKey<bool> odometry_in_world{
 inline constexpr ParameterKey<double> band_m{
     "slam.band_m", "m", 1.0, 0.2, 10.0, 0.1, Stage::Map, "Wall band",
     "Length along the girder over which one wall is one plane landmark"};
+inline constexpr ParameterKey<double> wall_continuity_mm{
+    "slam.wall_continuity_mm", "mm", 0.0, 0.0, 100.0, 0.1, Stage::Map, "Wall continuity",
+    "How far a wall may step across a diaphragm, plate distortion and welds included: the walls "
+    "run on through the plates, which ties the map's height and sideways position from one "
+    "compartment to the next (2 mm measured; off by default: it can move exact poses); 0 leaves "
+    "each compartment free"};
 inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};
@@ -76,6 +82,8 @@ struct SlamOptions {
   double odometry_deg_per_sqrt_m = slam_keys::odometry_deg_per_sqrt_m.default_value;
   bool odometry_in_world = slam_keys::odometry_in_world.default_value;
   double band_m = slam_keys::band_m.default_value;
+  double wall_continuity_m = mm_to_m(slam_keys::wall_continuity_mm.default_value);
+  double max_continuity_gap_m = 5.0;  // no tie across a longer unseen stretch of wall
   double max_wall_depth_m = slam_keys::max_wall_depth_m.default_value;
   double max_plate_depth_m = slam_keys::max_plate_depth_m.default_value;
   double plate_gate_m = slam_keys::plate_gate_m.default_value;

@@ -33,6 +33,10 @@ struct Moments {
 // deviations of its pixels' noise inside the range (the bias is then below 1 % of it).
 constexpr double kRangeMarginSigmas = 3.0;
 
+// A wall plane this far inside the outer surface is the middle plate (plates are several
+// millimetres thick; the frame's outer surface itself lies within a millimetre).
+constexpr double kInnerInsetM = 0.0025;
+
 // The noise of one pixel of a patch: the sensor's model at its depth, or the scatter of its
 // blocks' means about its plane if larger (a block mean of n pixels scatters by sigma /
 // sqrt(n)). The segmentation keeps the pixels near each plane, so the scatter alone falls
@@ -94,12 +98,18 @@ std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& wa
     const double station = camera_station_m + axis_cam.dot(p);
     bands[{s.wall, static_cast<long>(std::floor(station / o.band_m)), s.inset_m}].add(p, s.points);
   }
+  bool has_inner[4] = {false, false, false, false};
+  for (const auto& [key, m] : bands)
+    if (std::get<2>(key) > kInnerInsetM && m.weight >= o.min_patch_points) has_inner[std::get<0>(key)] = true;
   std::vector<FramePatch> out;
   for (const auto& [key, m] : bands) {
     FramePatch patch;
     if (!reduce(m, o, patch)) continue;
     patch.wall = std::get<0>(key);
     patch.band = std::get<1>(key);
+    const bool inner = std::get<2>(key) > kInnerInsetM;
+    if (inner) patch.zone = FramePatch::Zone::Inner;
+    else if (has_inner[patch.wall]) patch.zone = FramePatch::Zone::Outer;
     patch.normal = -map.walls[patch.wall].normal;
     patch.station_m = camera_station_m + axis_cam.dot(patch.centroid);
     out.push_back(patch);

@@ -21,6 +21,10 @@ struct FramePatch {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // camera frame: walls outward, plates forward
   double sigma_m = 0.0;
   double pixel_sigma_m = 0.0;  // one pixel's depth noise: the sensor model or the patch's scatter
+  // Which zone of its wall the frame took a band patch for: the middle plate (inside the
+  // outer surface), the outer surface (only when the frame saw the middle plate beside it:
+  // alone, a middle plate looks like an outer surface), or unknown.
+  enum class Zone { Unknown, Outer, Inner } zone = Zone::Unknown;
   int points = 0;
 };
 

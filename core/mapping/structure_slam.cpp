@@ -16,6 +16,34 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kMinPlateReachM = 0.05;  // plates nearer than this along the girder are one
 
+// The graph solved under the evidence test. The measurements alone (odometry, plates and
+// walls, without the walls' continuity ties) must demand a correction of the given poses
+// (`at_given` solves a graph with them held); the ties then shape the correction, starting
+// from the measurements' optimum, but never demand one: a tie holds two stretches of wall to
+// a couple of millimetres, finer than a wall beyond a plate is always known, and exact poses
+// must stay exact.
+template <typename AtGiven>
+PoseGraphSolution solve_under_evidence(PoseGraph graph, const PoseGraphOptions& options, int free_poses,
+                                       double sigmas, AtGiven at_given, CorrectionEvidence& evidence,
+                                       bool& kept) {
+  std::vector<PlaneContinuity> ties;
+  ties.swap(graph.continuities);
+  PoseGraphSolution s = solve_pose_graph(graph, options);
+  kept = false;
+  evidence = correction_evidence(0.0, 0.0, free_poses, 0.0);
+  if (sigmas > 0.0) {
+    PoseGraphSolution given = at_given(graph);
+    evidence = correction_evidence(given.final_cost, s.final_cost, free_poses, sigmas);
+    kept = !evidence.significant;
+    if (kept) return given;
+  }
+  if (ties.empty()) return s;
+  graph.continuities = std::move(ties);
+  graph.poses = s.poses;
+  graph.planes = s.planes;
+  return solve_pose_graph(graph, options);
+}
+
 // The tunnel's axis in the world, pointing the way `forward` does.
 Eigen::Vector3d oriented(const Eigen::Vector3d& axis, const Eigen::Vector3d& forward) {
   return axis.dot(forward) < 0 ? -axis : axis;
@@ -66,6 +94,7 @@ std::vector<double> StructureSlam::group_stations_m() const {
 
 int StructureSlam::add_plane(const Eigen::Vector3d& normal, double offset) {
   graph_.planes.push_back({normal, offset});
+  layer_zone_.push_back(FramePatch::Zone::Unknown);
   return static_cast<int>(graph_.planes.size()) - 1;
 }
 
@@ -172,9 +201,47 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
       plane = add_plane(normal, normal.dot(camera_to_world * p->centroid) + shift_at(p, best));
       wall_landmarks_[{p->wall, p->band}].push_back(plane);
     }
+    FramePatch::Zone& zone = layer_zone_[static_cast<std::size_t>(plane)];
+    if (zone == FramePatch::Zone::Unknown) zone = p->zone;
+    if (zone != FramePatch::Zone::Unknown && zone == p->zone) continue_wall(*p, plane, camera_to_world * p->centroid);
     planes.push_back(plane);
   }
   return planes;
+}
+
+// A girder's walls run on through its diaphragms: the floor beyond a plate continues the floor
+// before it. The frames near a plate see little of the floor and roof, and none sees both
+// sides, so without this the map's height (and its sideways position) starts afresh in each
+// compartment from where the odometry put it. Each band's outer surface, and its middle
+// plate, is tied to the nearest one of its kind along the same wall across a plate the walk
+// has seen (within a compartment the frames that see both bands already tie them). The zone
+// is what the frame took the patch for; it only chooses the kind and never where a patch
+// lands (a landing held to it misplaced whole walls where frames misjudged their zones).
+void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point) {
+  if (!(options_.wall_continuity_m > 0.0)) return;
+  const int kind = patch.wall * 2 + (patch.zone == FramePatch::Zone::Inner ? 1 : 0);
+  const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point});
+  if (!added) return;
+  const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
+  // The point between the two, held by the current pose (ties are stored in pose order).
+  auto tie = [&](const ZoneLayer& other, long other_band) {
+    if (other.plane == plane) return;
+    const double lo = (std::min(other_band, patch.band) + 1) * options_.band_m;
+    const double hi = std::max(other_band, patch.band) * options_.band_m;
+    const bool across_plate = std::any_of(plates_.begin(), plates_.end(), [&](const KnownPlate& k) {
+      return k.station_m >= lo - 0.5 * options_.band_m && k.station_m <= hi + 0.5 * options_.band_m;
+    });
+    if (!across_plate) return;
+    const Eigen::Vector3d between = graph_.poses.back().inverse() * (0.5 * (other.point + point));
+    graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between, options_.wall_continuity_m});
+  };
+  if (it != zone_layers_.begin()) {
+    const auto below = std::prev(it);
+    if (below->first.first == kind && patch.band - below->first.second <= max_gap) tie(below->second, below->first.second);
+  }
+  const auto above = std::next(it);
+  if (above != zone_layers_.end() && above->first.first == kind && above->first.second - patch.band <= max_gap)
+    tie(above->second, above->first.second);
 }
 
 void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {
@@ -284,14 +351,20 @@ void StructureSlam::solve_window() {
     q.plane = entry->second;
     window.patches.push_back(q);
   }
+  const auto first_tie = std::lower_bound(graph_.continuities.begin(), graph_.continuities.end(), from,
+                                          [](const PlaneContinuity& c, int pose) { return c.pose < pose; });
+  for (auto it = first_tie; it != graph_.continuities.end(); ++it) {
+    const auto a = plane_index.find(it->a), b = plane_index.find(it->b);
+    if (a != plane_index.end() && b != plane_index.end())
+      window.continuities.push_back({a->second, b->second, it->pose - from, it->point, it->sigma_m});
+  }
   PoseGraphOptions po;
   po.max_iterations = options_.window_iterations;
-  PoseGraphSolution s = solve_pose_graph(window, po);
-  if (options_.correction_sigmas > 0.0) {
-    PoseGraphSolution given = solve_window_at_given_poses(window, from, free_from, po);
-    if (!correction_evidence(given.final_cost, s.final_cost, n - free_from, options_.correction_sigmas).significant)
-      s = std::move(given);
-  }
+  CorrectionEvidence evidence;
+  bool kept = false;
+  const PoseGraphSolution s = solve_under_evidence(
+      std::move(window), po, n - free_from, options_.correction_sigmas,
+      [&](const PoseGraph& g) { return solve_window_at_given_poses(g, from, free_from, po); }, evidence, kept);
   for (int g = free_from; g < n; ++g) graph_.poses[static_cast<std::size_t>(g)] = s.poses[static_cast<std::size_t>(g - from)];
   for (std::size_t k = 0; k < planes_used.size(); ++k) graph_.planes[static_cast<std::size_t>(planes_used[k])] = s.planes[k];
 }
@@ -327,8 +400,7 @@ PoseCorrection StructureSlam::correction(std::size_t g) const {
 
 // The landmarks fitted to the poses as given (poses held): the null hypothesis the optimum is
 // tested against.
-PoseGraphSolution StructureSlam::solve_at_given_poses() const {
-  PoseGraph given = graph_;
+PoseGraphSolution StructureSlam::solve_at_given_poses(PoseGraph given) const {
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     given.poses[g] = groups_[g].odometry;
     given.fixed[g] = true;
@@ -340,16 +412,9 @@ PoseRefinement StructureSlam::finish() {
   const auto t0 = std::chrono::steady_clock::now();
   PoseRefinement out;
   if (groups_.empty()) return out;
-  PoseGraphSolution s = solve_pose_graph(graph_);
-  if (options_.correction_sigmas > 0.0) {
-    PoseGraphSolution given = solve_at_given_poses();
-    out.evidence = correction_evidence(given.final_cost, s.final_cost, static_cast<int>(groups_.size()) - 1,
-                                       options_.correction_sigmas);
-    out.given_poses_kept = !out.evidence.significant;
-    if (out.given_poses_kept) s = std::move(given);
-  } else {
-    out.evidence = correction_evidence(0.0, 0.0, static_cast<int>(groups_.size()) - 1, 0.0);
-  }
+  const PoseGraphSolution s = solve_under_evidence(
+      graph_, {}, static_cast<int>(groups_.size()) - 1, options_.correction_sigmas,
+      [&](const PoseGraph& g) { return solve_at_given_poses(g); }, out.evidence, out.given_poses_kept);
   graph_.poses = s.poses;
   graph_.planes = s.planes;
   out.ran = !graph_.patches.empty();

@@ -70,7 +70,7 @@ class StructureSlam {
   std::vector<int> wall_layers(const std::vector<const FramePatch*>& patches, const Eigen::Isometry3d& camera_to_world);
   int add_plane(const Eigen::Vector3d& normal, double offset);
   void solve_window();
-  PoseGraphSolution solve_at_given_poses() const;
+  PoseGraphSolution solve_at_given_poses(PoseGraph given) const;
   PoseGraphSolution solve_window_at_given_poses(PoseGraph window, int from, int free_from,
                                                 const PoseGraphOptions& options) const;
   PoseCorrection correction(std::size_t g) const;
@@ -79,6 +79,14 @@ class StructureSlam {
   std::vector<Group> groups_;
   PoseGraph graph_;  // poses = groups' current estimates (their first frame's camera)
   std::map<std::pair<int, long>, std::vector<int>> wall_landmarks_;  // (wall, band) -> layers
+  std::vector<FramePatch::Zone> layer_zone_;  // per plane: the wall zone its views took it for
+  struct ZoneLayer {
+    int plane;
+    Eigen::Vector3d point;  // world, where it was first seen
+  };
+  // (wall * 2 + 1 for the middle plate, band) -> that zone's layer there.
+  std::map<std::pair<int, long>, ZoneLayer> zone_layers_;
+  void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
   struct KnownPlate {
     double station_m;    // along the walk (odometry), where it was first seen
     double seen_from_m;  // the camera's station when it was last seen

@@ -94,6 +94,31 @@ struct HeldPatchResidual {
   }
 };
 
+// Two planes' signed distances from one point (held in a pose's frame), against each other.
+struct ContinuityResidual {
+  Eigen::Vector3d point;
+  double inv_sigma;
+
+  template <typename T>
+  bool operator()(const T* q, const T* t, const T* na, const T* da, const T* nb, const T* db, T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> Q(q);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Tt(t), Na(na), Nb(nb);
+    const Eigen::Matrix<T, 3, 1> x = Q * point.cast<T>() + Tt;
+    residual[0] = T(inv_sigma) * ((Na.dot(x) - da[0]) - (Nb.dot(x) - db[0]));
+    return true;
+  }
+};
+
+void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double robust_sigmas,
+                    std::vector<PoseBlock>& poses, std::vector<PlaneBlock>& planes) {
+  PoseBlock& pose = poses[static_cast<std::size_t>(c.pose)];
+  PlaneBlock& a = planes[static_cast<std::size_t>(c.a)];
+  PlaneBlock& b = planes[static_cast<std::size_t>(c.b)];
+  auto* cost = new ceres::AutoDiffCostFunction<ContinuityResidual, 1, 4, 3, 3, 1, 3, 1>(
+      new ContinuityResidual{c.point, 1.0 / c.sigma_m});
+  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, a.n, a.d, b.n, b.d);
+}
+
 void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<PoseBlock>& poses) {
   PoseBlock& a = poses[static_cast<std::size_t>(o.from)];
   PoseBlock& b = poses[static_cast<std::size_t>(o.to)];
@@ -162,6 +187,7 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
   for (const GraphOdometry& o : graph.odometry) add_odometry(problem, o, poses);
   for (const PlanePatch& p : graph.patches)
     add_patch(problem, p, options.robust_sigmas, held(graph, p.pose), poses, planes);
+  for (const PlaneContinuity& c : graph.continuities) add_continuity(problem, c, options.robust_sigmas, poses, planes);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(poses[i].q)) continue;
     problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);

@@ -34,12 +34,24 @@ struct PlanePatch {
   double sigma_m = 0.002;  // uncertainty of the centroid's distance to the plane
 };
 
+// Two planes that are one surface (neighbouring stretches of one wall): at `point`, between
+// them, they lie the same distance from it within `sigma_m`. Their directions may differ (a
+// curving wall): half-way between two tangents of a smooth curve, both are off it alike. The
+// point is held in the frame of `pose`, so that it moves with the map.
+struct PlaneContinuity {
+  int a = 0, b = 0;
+  int pose = 0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // in the pose's frame
+  double sigma_m = 0.002;
+};
+
 struct PoseGraph {
   std::vector<Eigen::Isometry3d> poses;  // initial values
   std::vector<bool> fixed;               // per pose: held at its initial value
   std::vector<GraphOdometry> odometry;
   std::vector<GraphPlane> planes;        // initial values
   std::vector<PlanePatch> patches;
+  std::vector<PlaneContinuity> continuities;
 };
 
 struct PoseGraphOptions {
