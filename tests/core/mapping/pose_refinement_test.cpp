@@ -485,17 +485,21 @@ SyntheticFrame observe_zoned(const Eigen::Isometry3d& T, double x0, double x1, c
   return f;
 }
 
-TEST(PoseRefinement, TheFloorBeyondAPlateContinuesTheFloorBeforeIt) {
-  // Near a diaphragm the camera sees only the side walls; past it, the floor and roof of a new
-  // compartment that no earlier frame saw. The odometry slips 20 mm up over that blind stretch.
-  // The walls run on through the plate, so the map beyond it is brought back down to the
-  // floor before it; left free, each compartment keeps wherever the odometry put it.
-  const bool all[4] = {true, true, true, true}, sides[4] = {true, true, false, false};
-  constexpr double kPlateX = 4.0, kSlipM = 0.02;
+// A walk of 33 poses 0.25 m apart through a diaphragm at x = 4 m: near the plate the camera
+// sees only the side walls; past it, the floor and roof of a new compartment that no earlier
+// frame saw. Beyond the plate the floor and roof lie `section_step_m` lower.
+struct PlateWalk {
+  static constexpr double kPlateX = 4.0;
   std::vector<TunnelMap> maps;
   std::vector<FrameWalls> walls;
-  std::vector<Eigen::Isometry3d> truth, given;
+  std::vector<Eigen::Isometry3d> truth;
   std::vector<int> groups;
+};
+
+PlateWalk plate_walk(double section_step_m = 0.0) {
+  const bool all[4] = {true, true, true, true}, sides[4] = {true, true, false, false};
+  constexpr double kPlateX = PlateWalk::kPlateX;
+  PlateWalk w;
   for (int g = 0; g < 33; ++g) {
     const double x = 0.25 * g;
     const Eigen::Isometry3d T = camera_at(x, 0.02 * std::sin(0.7 * g), 0.6 + 0.03 * std::cos(0.9 * g));
@@ -503,18 +507,33 @@ TEST(PoseRefinement, TheFloorBeyondAPlateContinuesTheFloorBeforeIt) {
     const double x1 = x < kPlateX ? kPlateX - 0.05 : x + 4.0;
     const std::optional<double> plate = x < kPlateX ? std::optional<double>(kPlateX) : std::nullopt;
     SyntheticFrame f = observe_zoned(T, std::max(x + 0.6, x < kPlateX ? 0.0 : kPlateX + 0.05), x1, blind ? sides : all, plate);
-    maps.push_back(f.map);
-    walls.push_back(f.walls);
-    truth.push_back(T);
+    for (WallSample& s : f.walls.samples)
+      if ((s.wall == 2 || s.wall == 3) && (T * s.point.cast<double>()).x() > kPlateX)
+        s.point += (T.inverse().linear() * Eigen::Vector3d(0.0, 0.0, -section_step_m)).cast<float>();
+    w.maps.push_back(f.map);
+    w.walls.push_back(f.walls);
+    w.truth.push_back(T);
+    w.groups.push_back(g);
+  }
+  return w;
+}
+
+TEST(PoseRefinement, TheFloorBeyondAPlateContinuesTheFloorBeforeIt) {
+  // The odometry slips 20 mm up over the blind stretch at the plate. The walls run on through
+  // the plate, so the map beyond it is brought back down to the floor before it; left free,
+  // each compartment keeps wherever the odometry put it.
+  constexpr double kSlipM = 0.02;
+  const PlateWalk w = plate_walk();
+  std::vector<Eigen::Isometry3d> given;
+  for (const Eigen::Isometry3d& T : w.truth) {
     Eigen::Isometry3d G = T;
-    G.translation().z() += kSlipM * std::clamp((x - (kPlateX - 1.0)) / 1.3, 0.0, 1.0);
+    G.translation().z() += kSlipM * std::clamp((T.translation().x() - (PlateWalk::kPlateX - 1.0)) / 1.3, 0.0, 1.0);
     given.push_back(G);
-    groups.push_back(g);
   }
   auto worst_height_error_mm = [&](const PoseRefinement& r) {
     double worst = 0.0;
-    for (std::size_t i = 0; i < truth.size(); ++i)
-      worst = std::max(worst, 1000.0 * std::abs(r.poses[i].translation().z() - truth[i].translation().z()));
+    for (std::size_t i = 0; i < w.truth.size(); ++i)
+      worst = std::max(worst, 1000.0 * std::abs(r.poses[i].translation().z() - w.truth[i].translation().z()));
     return worst;
   };
   // Both corrected whatever the evidence: one slip over a short walk is within its noise.
@@ -522,8 +541,8 @@ TEST(PoseRefinement, TheFloorBeyondAPlateContinuesTheFloorBeforeIt) {
   tied_walls.correction_sigmas = free_walls.correction_sigmas = 0.0;
   tied_walls.wall_continuity_m = 0.002;
   free_walls.wall_continuity_m = 0.0;
-  const double tied = worst_height_error_mm(refine(maps, walls, given, groups, tied_walls));
-  const double free = worst_height_error_mm(refine(maps, walls, given, groups, free_walls));
+  const double tied = worst_height_error_mm(refine(w.maps, w.walls, given, w.groups, tied_walls));
+  const double free = worst_height_error_mm(refine(w.maps, w.walls, given, w.groups, free_walls));
   std::printf("height error past the plate: walls tied %.2f mm, walls free %.2f mm\n", tied, free);
   EXPECT_GT(free, 15.0);
   EXPECT_LT(tied, 5.0);
@@ -532,37 +551,17 @@ TEST(PoseRefinement, TheFloorBeyondAPlateContinuesTheFloorBeforeIt) {
 TEST(PoseRefinement, ASectionThatStepsAtAPlateLeavesExactPosesExact) {
   // Exact poses, and beyond the diaphragm the floor and roof lie 6 mm lower (the girder settled
   // there, or its plates are thicker): the walls' continuity across the plate, however tight,
-  // disagrees with what was measured.
-  // The correction is the measurements' to demand; a tie only shapes one.
-  const bool all[4] = {true, true, true, true}, sides[4] = {true, true, false, false};
-  constexpr double kPlateX = 4.0, kStepM = 0.006;
-  std::vector<TunnelMap> maps;
-  std::vector<FrameWalls> walls;
-  std::vector<Eigen::Isometry3d> truth;
-  std::vector<int> groups;
-  for (int g = 0; g < 33; ++g) {
-    const double x = 0.25 * g;
-    const Eigen::Isometry3d T = camera_at(x, 0.02 * std::sin(0.7 * g), 0.6 + 0.03 * std::cos(0.9 * g));
-    const bool blind = x > kPlateX - 1.0 && x < kPlateX + 0.3;
-    const double x1 = x < kPlateX ? kPlateX - 0.05 : x + 4.0;
-    const std::optional<double> plate = x < kPlateX ? std::optional<double>(kPlateX) : std::nullopt;
-    SyntheticFrame f = observe_zoned(T, std::max(x + 0.6, x < kPlateX ? 0.0 : kPlateX + 0.05), x1, blind ? sides : all, plate);
-    for (WallSample& w : f.walls.samples)
-      if ((w.wall == 2 || w.wall == 3) && (T * w.point.cast<double>()).x() > kPlateX)
-        w.point += (T.inverse().linear() * Eigen::Vector3d(0.0, 0.0, -kStepM)).cast<float>();
-    maps.push_back(f.map);
-    walls.push_back(f.walls);
-    truth.push_back(T);
-    groups.push_back(g);
-  }
+  // disagrees with what was measured. The correction is the measurements' to demand; a tie
+  // only shapes one.
+  const PlateWalk w = plate_walk(0.006);
   SlamOptions tight;
   tight.wall_continuity_m = 0.0001;
-  const PoseRefinement r = refine(maps, walls, truth, groups, tight);
+  const PoseRefinement r = refine(w.maps, w.walls, w.truth, w.groups, tight);
   ASSERT_TRUE(r.ran);
   // The measurements agree with the exact poses: no gain at all (with the ties counted, 80).
   EXPECT_LT(r.evidence.chi2_gain, 1.0);
   EXPECT_TRUE(r.given_poses_kept);
-  for (std::size_t i = 0; i < truth.size(); ++i) EXPECT_TRUE(r.poses[i].isApprox(truth[i], 1e-9)) << i;
+  for (std::size_t i = 0; i < w.truth.size(); ++i) EXPECT_TRUE(r.poses[i].isApprox(w.truth[i], 1e-9)) << i;
 }
 
 TEST(PoseRefinement, ExactPosesStayExactWhileTheWalkRuns) {
