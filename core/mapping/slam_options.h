@@ -24,11 +24,12 @@ inline constexpr ParameterKey<double> band_m{
     "slam.band_m", "m", 1.0, 0.2, 10.0, 0.1, Stage::Map, "Wall band",
     "Length along the girder over which one wall is one plane landmark"};
 inline constexpr ParameterKey<double> wall_continuity_mm{
-    "slam.wall_continuity_mm", "mm", 0.0, 0.0, 100.0, 0.1, Stage::Map, "Wall continuity",
+    "slam.wall_continuity_mm", "mm", 2.0, 0.0, 100.0, 0.1, Stage::Map, "Wall continuity",
     "How far a wall may step across a diaphragm, plate distortion and welds included: the walls "
     "run on through the plates, which ties the map's height and sideways position from one "
-    "compartment to the next (2 mm measured; off by default: it can move exact poses); 0 leaves "
-    "each compartment free"};
+    "compartment to the next (applied by the final optimisation, never to the poses while the "
+    "walk runs, and only when the measurements alone demand a correction); 0 leaves each "
+    "compartment free"};
 inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};
