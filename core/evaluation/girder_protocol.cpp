@@ -74,12 +74,15 @@ nlohmann::json girder_json(const GirderResult& r) {
           {"poses_kept_as_given", s.poses_kept ? nlohmann::json(*s.poses_kept) : nlohmann::json(nullptr)},
           {"pose_error_mm", distribution(s.pose_error_mm)},
           {"pose_error_deg", distribution(s.pose_error_deg)},
+          {"pose_error_along_mm", distribution(s.pose_error_along_mm)},
+          {"pose_error_across_mm", distribution(s.pose_error_across_mm)},
+          {"pose_error_vertical_mm", distribution(s.pose_error_vertical_mm)},
           {"ms_per_frame", std::round(s.ms_per_frame * 100) / 100}};
 }
 
 // The family's distributions over the girders with `drifted` poses.
 nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
-  std::vector<double> w, h, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, ms;
+  std::vector<double> w, h, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, along, across, vertical, ms;
   int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, plates = 0, matched = 0,
       missed = 0, invented = 0, unmeasured = 0, kept = 0, refined = 0;
   for (const GirderResult& r : results) {
@@ -90,6 +93,8 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
     append(mw, s.manhole_width_error_mm), append(mh, s.manhole_height_error_mm);
     append(corr_mm, s.correction_mm), append(corr_deg, s.correction_deg);
     append(pose_mm, s.pose_error_mm), append(pose_deg, s.pose_error_deg);
+    append(along, s.pose_error_along_mm), append(across, s.pose_error_across_mm);
+    append(vertical, s.pose_error_vertical_mm);
     ms.push_back(s.ms_per_frame);
     if (s.poses_kept) ++refined, kept += *s.poses_kept ? 1 : 0;
     if (r.draw.constant_section) ++constant, phantom += s.phantom_sections > 0 ? 1 : 0;
@@ -113,6 +118,9 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
           {"poses_kept_as_given", {{"girders", kept}, {"of_refined", refined}}},
           {"pose_error_mm", distribution(pose_mm)},
           {"pose_error_deg", distribution(pose_deg)},
+          {"pose_error_along_mm", distribution(along)},
+          {"pose_error_across_mm", distribution(across)},
+          {"pose_error_vertical_mm", distribution(vertical)},
           {"ms_per_frame", distribution(ms)}};
 }
 
@@ -212,6 +220,9 @@ std::string girders_markdown(const nlohmann::json& report) {
   row("girders whose poses the evidence test kept", kept(e), kept(d));
   row("pose error after alignment (mm)", cell(e["pose_error_mm"]), cell(d["pose_error_mm"]));
   row("pose error after alignment (deg)", cell(e["pose_error_deg"]), cell(d["pose_error_deg"]));
+  row("pose error along the girder (mm)", cell(e["pose_error_along_mm"]), cell(d["pose_error_along_mm"]));
+  row("pose error across the girder (mm)", cell(e["pose_error_across_mm"]), cell(d["pose_error_across_mm"]));
+  row("pose error vertically (mm)", cell(e["pose_error_vertical_mm"]), cell(d["pose_error_vertical_mm"]));
   row("detection + map (ms per frame)", cell(e["ms_per_frame"]), cell(d["ms_per_frame"]));
   s << "\n## Girders\n\n| # | girder | stations w / h p95 (mm) | sections | plates | manhole w / h worst (mm) |\n"
        "|---|---|---|---|---|---|\n";

@@ -28,6 +28,16 @@ class TruthLine {
     const Eigen::Vector3d dir = (x_[b] - x_[a]).normalized();
     return s_[best] + dir.dot(p - x_[best]);
   }
+  // The centre line's direction at its point nearest `p` (world x when it has one point).
+  Eigen::Vector3d direction_at(const Eigen::Vector3d& p) const {
+    if (x_.size() < 2) return Eigen::Vector3d::UnitX();
+    std::size_t best = 0;
+    double d2 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < x_.size(); ++i)
+      if (const double d = (x_[i] - p).squaredNorm(); d < d2) d2 = d, best = i;
+    const std::size_t a = best == 0 ? 0 : best - 1, b = std::min(x_.size() - 1, best + 1);
+    return (x_[b] - x_[a]).normalized();
+  }
 
  private:
   std::vector<double> s_;
@@ -110,7 +120,20 @@ void score_plates(const StationMap& m, const TruthLine& line, std::vector<TruthP
   g.plates_missed = static_cast<int>(std::count(used.begin(), used.end(), false));
 }
 
-void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, GirderScore& g) {
+// A position error in the girder's frame at `truth`: along the centre line, across it
+// (horizontal; the simulator's world up is +z) and vertical.
+void split_error(const Eigen::Vector3d& error, const Eigen::Vector3d& truth, const TruthLine& line, GirderScore& g) {
+  const Eigen::Vector3d along = line.direction_at(truth);
+  Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(along);
+  if (across.norm() < 1e-6) return;
+  across.normalize();
+  const Eigen::Vector3d vertical = along.cross(across);
+  g.pose_error_along_mm.push_back(error.dot(along) * 1000);
+  g.pose_error_across_mm.push_back(error.dot(across) * 1000);
+  g.pose_error_vertical_mm.push_back(error.dot(vertical) * 1000);
+}
+
+void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, const TruthLine& line, GirderScore& g) {
   if (dm.mapped.refinement.ran) g.poses_kept = dm.mapped.refinement.given_poses_kept;
   for (const PoseCorrection& c : dm.mapped.refinement.groups) {
     g.correction_mm.push_back(c.translation_mm);
@@ -147,6 +170,7 @@ void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, GirderS
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d x = Ra * est.col(i) + ta;
     g.pose_error_mm.push_back((x - truth.col(i)).norm() * 1000);
+    split_error(x - truth.col(i), truth.col(i), line, g);
     const Eigen::Matrix3d dR = rot_true[i].transpose() * Ra * dm.mapped.poses[i].linear();
     g.pose_error_deg.push_back(Eigen::AngleAxisd(dR).angle() * 180 / M_PI);
   }
@@ -187,7 +211,7 @@ GirderScore score_girder(const DatasetMapping& dm, const nlohmann::json& truth,
     seen_from = std::min(seen_from, s), seen_to = std::max(seen_to, s);
   }
   score_plates(m, line, plates, seen_from - 0.1, seen_to + 0.1, o, g);
-  score_poses(dm, frames, g);
+  score_poses(dm, frames, line, g);
   const double n = std::max<std::size_t>(1, dm.maps.size());
   g.ms_per_frame = (dm.detect_ms + dm.map_ms) / n;
   return g;

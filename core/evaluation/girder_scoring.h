@@ -22,6 +22,9 @@ struct GirderScore {
   std::vector<double> correction_mm, correction_deg;    // per pose group
   std::optional<bool> poses_kept;    // the evidence test kept the given poses (unset: not refined)
   std::vector<double> pose_error_mm, pose_error_deg;    // per frame, after one rigid alignment
+  // The same position error split in the truth girder's frame at the frame's station: along
+  // its centre line, across it (horizontal, positive to the left) and vertical; signed.
+  std::vector<double> pose_error_along_mm, pose_error_across_mm, pose_error_vertical_mm;
   double ms_per_frame = 0.0;
 };
 
