@@ -19,27 +19,28 @@ class TruthLine {
     for (const auto& p : line) s_.push_back(p["station_m"].get<double>()), x_.push_back(vec3(p["point"]));
   }
   double station_of(const Eigen::Vector3d& p) const {
-    std::size_t best = 0;
-    double d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      if (const double d = (x_[i] - p).squaredNorm(); d < d2) d2 = d, best = i;
     if (x_.size() < 2) return s_.empty() ? 0.0 : s_[0];
-    const std::size_t a = best == 0 ? 0 : best - 1, b = std::min(x_.size() - 1, best + 1);
-    const Eigen::Vector3d dir = (x_[b] - x_[a]).normalized();
-    return s_[best] + dir.dot(p - x_[best]);
+    const std::size_t best = nearest(p);
+    return s_[best] + direction_near(best).dot(p - x_[best]);
   }
   // The centre line's direction at its point nearest `p` (world x when it has one point).
   Eigen::Vector3d direction_at(const Eigen::Vector3d& p) const {
-    if (x_.size() < 2) return Eigen::Vector3d::UnitX();
+    return x_.size() < 2 ? Eigen::Vector3d::UnitX() : direction_near(nearest(p));
+  }
+
+ private:
+  std::size_t nearest(const Eigen::Vector3d& p) const {
     std::size_t best = 0;
     double d2 = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < x_.size(); ++i)
       if (const double d = (x_[i] - p).squaredNorm(); d < d2) d2 = d, best = i;
-    const std::size_t a = best == 0 ? 0 : best - 1, b = std::min(x_.size() - 1, best + 1);
+    return best;
+  }
+  Eigen::Vector3d direction_near(std::size_t i) const {
+    const std::size_t a = i == 0 ? 0 : i - 1, b = std::min(x_.size() - 1, i + 1);
     return (x_[b] - x_[a]).normalized();
   }
 
- private:
   std::vector<double> s_;
   std::vector<Eigen::Vector3d> x_;
 };

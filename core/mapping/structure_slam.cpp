@@ -223,7 +223,7 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
   const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point});
   if (!added) return;
   const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
-  // The point between the two, held by the current pose (ties are stored in pose order).
+  // The point between the two, held by the current pose so that it moves with the map.
   auto tie = [&](const ZoneLayer& other, long other_band) {
     if (other.plane == plane) return;
     const double lo = (std::min(other_band, patch.band) + 1) * options_.band_m;
