@@ -89,12 +89,11 @@ void score_sections(const StationMap& m, const TruthLine& line, const std::vecto
   for (double f : found) g.phantom_sections += near_any(f, truth_joints, o.joint_tolerance_m) ? 0 : 1;
 }
 
-void score_plates(const StationMap& m, const TruthLine& line, std::vector<TruthPlate> plates,
+// Plates are seen from afar, so a map may show one beyond its stations' extent (the end wall
+// ahead of the last stop): a plate outside the extent counts when the map found it, and is no
+// miss when it did not.
+void score_plates(const StationMap& m, const TruthLine& line, const std::vector<TruthPlate>& plates,
                   double seen_from, double seen_to, const GirderScoringOptions& o, GirderScore& g) {
-  plates.erase(std::remove_if(plates.begin(), plates.end(),
-                              [&](const TruthPlate& p) { return p.station < seen_from || p.station > seen_to; }),
-               plates.end());
-  g.plates_true = static_cast<int>(plates.size());
   std::vector<bool> used(plates.size(), false);
   for (const Diaphragm& d : m.girder.diaphragms) {
     const double s = line.station_of(d.point);
@@ -118,7 +117,12 @@ void score_plates(const StationMap& m, const TruthLine& line, std::vector<TruthP
     g.manhole_width_error_mm.push_back((d.manhole->width_m - t.width) * 1000);
     g.manhole_height_error_mm.push_back((d.manhole->height_m - t.height) * 1000);
   }
-  g.plates_missed = static_cast<int>(std::count(used.begin(), used.end(), false));
+  for (std::size_t i = 0; i < plates.size(); ++i) {
+    const bool inside = plates[i].station >= seen_from && plates[i].station <= seen_to;
+    if (!inside && !used[i]) continue;
+    ++g.plates_true;
+    if (!used[i]) ++g.plates_missed;
+  }
 }
 
 // A position error in the girder's frame at `truth`: along the centre line, across it

@@ -3,19 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <set>
 
+#include "core/mapping/joint_stretch.h"
 #include "core/util/median.h"
 
 namespace tunnelmap {
 
 namespace {
-
-struct Profile {
-  const std::vector<double>& width_m;
-  const std::vector<double>& height_m;
-};
 
 // A frame's own sizes over one section's stations.
 struct Sides {
@@ -64,56 +59,55 @@ std::set<int> poses_seeing_step(const SectionRun& a, const SectionRun& b, const 
 
 bool measured(const std::vector<double>& v) { return !std::isnan(median_of_measured(v)); }
 
-// The dimension that steps: 0 width, 1 height (the larger step).
-int stepping_dimension(const SectionRun& a, const SectionRun& b) {
-  const double dw = std::abs(b.width_m - a.width_m), dh = std::abs(b.height_m - a.height_m);
-  return !(dh > dw) ? 0 : 1;
-}
-
-// Where a joint no frame saw whole may lie: the stations after the last whose size is nearer
-// `a`'s and before the first nearer `b`'s (the profile: a frame's own sizes, else pooled
-// positions). It is hidden when a plate stands within reach of that stretch (past the plate
-// the robot's first views look over the stretch behind it) and no frame that measured the
-// stepping dimension on both sides saw it stay.
-struct HiddenStretch {
-  int last_a = 0, first_b = 0;
-};
-
-std::optional<HiddenStretch> hidden_by_plate(const SectionRun& a, const SectionRun& b, const FrameSides& frames,
-                                             const Profile& profile, const JointEvidence& e) {
+// A frame that measures the stepping dimension on both sides and sees no step there.
+bool a_frame_sees_it_stay(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e) {
   const int dim = stepping_dimension(a, b);
-  const std::vector<double>& size = dim == 0 ? profile.width_m : profile.height_m;
-  const double size_a = dim == 0 ? a.width_m : a.height_m, size_b = dim == 0 ? b.width_m : b.height_m;
-  const auto at = [&](int k) { return size[static_cast<std::size_t>(k)]; };
-  const auto nearer_a = [&](int k) { return std::abs(at(k) - size_a) < std::abs(at(k) - size_b); };
-  int last_a = a.first - 1, first_b = b.last + 1;
-  for (int k = a.first; k <= a.last; ++k)
-    if (!std::isnan(at(k)) && nearer_a(k)) last_a = k;
-  for (int k = b.last; k >= b.first; --k)
-    if (!std::isnan(at(k)) && !nearer_a(k)) first_b = k;
-  const double step = size_b - size_a;
+  const double step = dim == 0 ? b.width_m - a.width_m : b.height_m - a.height_m;
   for (const auto& [frame, s] : frames) {
     const std::vector<double>& before = dim == 0 ? s.w[0] : s.h[0];
     const std::vector<double>& after = dim == 0 ? s.w[1] : s.h[1];
-    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m)) return std::nullopt;
+    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m)) return true;
   }
-  for (int p : e.plate_stations)
-    if (p >= last_a - e.plate_reach && p <= first_b + e.plate_reach && p >= a.first && p < b.last)
-      return HiddenStretch{last_a, first_b};
-  return std::nullopt;
+  return false;
 }
 
-// Pose groups whose frames' own sizes on one side are nearer that side's size than the other's.
-bool each_side_measured(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e) {
+// The stretch a plate hides: one within reach of it, with no frame seeing the size stay.
+bool hidden_by_plate(const SectionRun& a, const SectionRun& b, const JointStretch& s, const FrameSides& frames,
+                     const JointEvidence& e) {
+  if (a_frame_sees_it_stay(a, b, frames, e)) return false;
+  return std::any_of(e.plate_stations.begin(), e.plate_stations.end(), [&](int p) {
+    return p >= s.last_a - e.plate_reach && p <= s.first_b + e.plate_reach && p >= a.first && p < b.last;
+  });
+}
+
+// Pose groups (other than `except`) whose frames' own sizes on one side are nearer that side's
+// size than the other's: at least `min_poses` of them on each side.
+bool each_side_measured(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e,
+                        const std::set<int>& except = {}) {
   const int dim = stepping_dimension(a, b);
   const double size[2] = {dim == 0 ? a.width_m : a.height_m, dim == 0 ? b.width_m : b.height_m};
   std::set<int> poses[2];
-  for (const auto& [frame, s] : frames)
+  for (const auto& [frame, s] : frames) {
+    const int pose = pose_of(frame, e.pose_groups);
+    if (except.count(pose)) continue;
     for (int side = 0; side < 2; ++side) {
       const double own = median_of_measured(dim == 0 ? s.w[side] : s.h[side]);
-      if (std::abs(own - size[side]) < std::abs(own - size[1 - side])) poses[side].insert(pose_of(frame, e.pose_groups));
+      if (std::abs(own - size[side]) < std::abs(own - size[1 - side])) poses[side].insert(pose);
     }
+  }
   return static_cast<int>(poses[0].size()) >= e.min_poses && static_cast<int>(poses[1].size()) >= e.min_poses;
+}
+
+// Evidence a pose error cannot make: two poses' own frames see the step; or one does and the
+// frames of enough other poses on each side measure their side's size (the case of a joint a
+// plate hides, and a view of the step besides); or a plate hides it and they do.
+bool joint_confirmed(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointStretch& sized,
+                     const JointEvidence& e) {
+  const std::set<int> seeing = poses_seeing_step(a, b, frames, e);
+  if (static_cast<int>(seeing.size()) >= e.min_poses) return true;
+  if (!seeing.empty() && each_side_measured(a, b, frames, e, seeing) && !a_frame_sees_it_stay(a, b, frames, e))
+    return true;
+  return hidden_by_plate(a, b, sized, frames, e) && each_side_measured(a, b, frames, e);
 }
 
 SectionRun with_medians(int first, int last, const SectionSplit& split, const std::vector<double>& w,
@@ -143,20 +137,21 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
       continue;
     }
     SectionRun& last = out.sections.back();
-    const FrameSides frames = sides_by_frame(last, run, e.views);
-    if (static_cast<int>(poses_seeing_step(last, run, frames, e).size()) >= e.min_poses) {
+    const JointStretch sized = stretch_between(last, run, width_m, height_m);
+    const JointStretch stretch = narrowed_by_walls(last, run, sized, e.wall_m);
+    const bool confirmed = joint_confirmed(last, run, sides_by_frame(last, run, e.views), sized, e);
+    if (confirmed && stretch.unmeasured() <= 0 && stretch.middle() == run.first) {  // seen where it lies
       out.sections.push_back(run);
       continue;
     }
-    const std::optional<HiddenStretch> hidden = hidden_by_plate(last, run, frames, Profile{width_m, height_m}, e);
-    if (hidden && each_side_measured(last, run, frames, e)) {
-      // Nothing measured where in the stretch the step is: the joint goes to its middle, at
-      // most half the stretch from the truth. A step that was a short biased run next to the
-      // plate is gone once the sides are whole.
-      const int joint = std::clamp((hidden->last_a + hidden->first_b + 1) / 2, last.first + 1, run.last);
+    // Nothing measured where in the stretch the step lies (behind a plate, or between views
+    // that saw both sides): the joint goes to its middle, at most half of it from the truth. A
+    // step that was a short biased run next to a plate is gone once the sides are whole.
+    if (confirmed) {
+      const int joint = std::clamp(stretch.middle(), last.first + 1, run.last);
       const SectionRun before = with_medians(last.first, joint - 1, out, width_m, height_m);
       SectionRun after = with_medians(joint, run.last, out, width_m, height_m);
-      after.unseen_joint_stations = hidden->first_b - hidden->last_a - 1;
+      after.unseen_joint_stations = stretch.unmeasured();
       if (differ(before, after, e.change_m)) {
         last = before;
         out.sections.push_back(after);

@@ -525,6 +525,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   evidence.views = frame_views(k0);
   evidence.pose_groups = pose_groups;
   evidence.change_m = options_.section_change_mm / 1000.0;
+  for (const WallProfile& p : prof) evidence.wall_m.push_back({p.wall_m[0], p.wall_m[1], p.wall_m[2], p.wall_m[3]});
   for (double s : transverse_plate_stations(plates_))
     evidence.plate_stations.push_back(static_cast<int>(std::floor(s / step)) - k0);
   const SectionSplit split = keep_confirmed_joints(

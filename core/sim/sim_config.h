@@ -90,7 +90,8 @@ struct SimConfig {
   std::vector<double> diaphragm_x_m;
   // A whole girder (docs/simulator.md#long-girders): stations 0..girder_length_m, a start wall
   // at 0 and the end wall at girder_length_m (end_wall_distance_m is then not used), and with
-  // diaphragm_spacing_m > 0 diaphragms at S, 2S, ... short of the end (besides diaphragm_x_m).
+  // diaphragm_spacing_m > 0 diaphragms at S, 2S, ... at least S/2 short of the end (besides
+  // diaphragm_x_m).
   std::optional<double> girder_length_m;
   double diaphragm_spacing_m = 0.0;
   // Alignment (docs/simulator.md#curves): horizontal curve radius (0 = straight; > 0 turns

@@ -9,7 +9,9 @@ std::vector<double> diaphragm_stations(const SimConfig& c) {
   std::vector<double> x = c.diaphragm_x_m;
   if (!(c.diaphragm_spacing_m > 0.0) || !c.girder_length_m) return x;
   const double S = c.diaphragm_spacing_m, L = *c.girder_length_m;
-  for (int k = 1; k * S < L - 1e-9; ++k) x.push_back(k * S);
+  // Diaphragms stand evenly spaced from the start; a last bay shorter than half the spacing
+  // is not built (the end bay takes it), so no diaphragm stands a hand's width before the end.
+  for (int k = 1; k * S <= L - 0.5 * S + 1e-9; ++k) x.push_back(k * S);
   std::sort(x.begin(), x.end());
   x.erase(std::unique(x.begin(), x.end(), [](double a, double b) { return b - a < 1e-3; }), x.end());
   return x;

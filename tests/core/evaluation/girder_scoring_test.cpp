@@ -83,5 +83,52 @@ TEST(GirderScoring, ThePoseErrorIsSplitAlongAcrossAndVerticallyInTheGirdersFrame
   EXPECT_NEAR(g.pose_error_vertical_mm.front(), 2.0, 0.01);
 }
 
+
+// A straight 10 m girder along world x with one diaphragm at 4 m; the map's stations run
+// from 1 to 8 m, and it found the diaphragm and (seen from afar) the end wall at 10 m.
+struct StraightGirder {
+  nlohmann::json truth;
+  DatasetMapping mapped;
+  StraightGirder() {
+    nlohmann::json line = nlohmann::json::array();
+    for (int k = 0; k <= 100; ++k) line.push_back({{"station_m", 0.1 * k}, {"point", {0.1 * k, 0.0, 0.6}}});
+    nlohmann::json plate = {{"station_m", 4.0}, {"manhole", nullptr}};
+    truth = {{"girder", {{"centreline", line}, {"length_m", 10.0},
+                         {"compartments", nlohmann::json::array()}, {"diaphragms", {plate}}}}};
+    for (int k = 10; k <= 80; ++k)
+      mapped.mapped.stations.girder.centreline.push_back({0.1 * k, Eigen::Vector3d(0.1 * k, 0.0, 0.6), "measured"});
+    for (double x : {4.004, 10.01}) {
+      Diaphragm d;
+      d.station_m = x;
+      d.point = Eigen::Vector3d(x, 0.0, 0.6);
+      mapped.mapped.stations.girder.diaphragms.push_back(d);
+    }
+  }
+};
+
+TEST(GirderScoring, APlateTheMapFoundBeyondItsStationsCountsAndOneItDidNotIsNoMiss) {
+  StraightGirder t;
+  GirderScore g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  // The end wall beyond the stations is found, not invented; the start wall behind them,
+  // which the map did not show, is no miss.
+  EXPECT_EQ(g.plates_true, 2);
+  EXPECT_EQ(g.plates_matched, 2);
+  EXPECT_EQ(g.plates_invented, 0);
+  EXPECT_EQ(g.plates_missed, 0);
+  ASSERT_EQ(g.plate_error_mm.size(), 2u);
+  EXPECT_NEAR(g.plate_error_mm[0], 4.0, 1e-6);
+  EXPECT_NEAR(g.plate_error_mm[1], 10.0, 1e-6);
+  // Without the end wall in the map: one plate, found; the diaphragm within the stations,
+  // when the map misses it, is a miss.
+  t.mapped.mapped.stations.girder.diaphragms.pop_back();
+  g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  EXPECT_EQ(g.plates_true, 1);
+  EXPECT_EQ(g.plates_missed, 0);
+  t.mapped.mapped.stations.girder.diaphragms.clear();
+  g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  EXPECT_EQ(g.plates_true, 1);
+  EXPECT_EQ(g.plates_missed, 1);
+}
+
 }  // namespace
 }  // namespace tunnelmap

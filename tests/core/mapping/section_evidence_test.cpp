@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace tunnelmap {
@@ -83,12 +84,6 @@ TEST(SectionEvidence, OnePoseGroupsViewIsNotEnoughNorIsAStepTheOtherWay) {
   EXPECT_EQ(keep_confirmed_joints(p.split, p.w, p.h, evidence(wrong_way, {0, 1})).sections.size(), 1u);
 }
 
-}  // namespace
-}  // namespace tunnelmap
-
-namespace tunnelmap {
-namespace {
-
 TEST(SectionEvidence, AFarViewThatBlursTheStepStillSeesIt) {
   // Its stations next to the joint average both sections, so its own step is 20 of 30 mm:
   // nearer the step than no step.
@@ -157,6 +152,109 @@ TEST(SectionEvidence, AShortBiasedRunAtAPlateIsNoSection) {
   const SectionSplit kept = keep_confirmed_joints(split, w, h, evidence(views, {0, 1, 2, 3, 4, 5}, {8}));
   ASSERT_EQ(kept.sections.size(), 1u);
   EXPECT_NEAR(kept.sections[0].width_m, 0.80, 1e-9);
+}
+
+// 1.20 m high up to station 11, 1.23 m from 12: the roof rises, the floor stays. A plate at 4
+// hides stations 5-12 from every frame that measures the height whole; only the roof is seen
+// at 9-12 (past the plate, the floor beside the camera is out of view).
+struct RoofStep {
+  std::vector<double> w = std::vector<double>(20, 0.80), h;
+  std::vector<std::array<double, 4>> walls;
+  std::vector<FrameStationSize> views;
+  RoofStep() {
+    const double nan = std::nan("");
+    for (int k = 0; k < 20; ++k) {
+      h.push_back(k <= 4 ? 1.20 : k >= 13 ? 1.23 : nan);
+      const double roof = k >= 5 && k <= 8 ? nan : k < 12 ? 0.60 : 0.63;
+      walls.push_back({0.40, 0.40, k >= 5 && k <= 12 ? nan : 0.60, roof});
+    }
+    for (int frame : {0, 1})
+      for (int k = 0; k <= 4; ++k) views.push_back({frame, k, 0.80, 1.20});
+    for (int frame : {2, 3})
+      for (int k = 13; k <= 19; ++k) views.push_back({frame, k, 0.80, 1.23});
+  }
+  SectionSplit joints(const std::vector<std::array<double, 4>>& seen_walls) const {
+    JointEvidence e = evidence(views, {0, 1, 2, 3}, {4});
+    e.wall_m = seen_walls;
+    return keep_confirmed_joints(split_sections(w, h, kChange, 3), w, h, e);
+  }
+};
+
+TEST(SectionEvidence, TheWallThatCarriesAHiddenStepPlacesTheJoint) {
+  const RoofStep r;
+  const SectionSplit kept = r.joints(r.walls);
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 12);  // the roof moved between 11 and 12
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, 0);
+  EXPECT_NEAR(kept.sections[0].height_m, 1.20, 1e-9);
+  EXPECT_NEAR(kept.sections[1].height_m, 1.23, 1e-9);
+}
+
+TEST(SectionEvidence, AWallThatDoesNotStepLeavesAHiddenJointInTheMiddleOfItsStretch) {
+  // Only the floor is seen past the plate: it stays where it was on both sides, so it cannot
+  // tell the side; the joint goes to the middle of stations 5-12.
+  RoofStep r;
+  std::vector<std::array<double, 4>> floor_only = r.walls;
+  for (int k = 5; k <= 12; ++k) floor_only[k][2] = 0.60, floor_only[k][3] = std::nan("");
+  const SectionSplit kept = r.joints(floor_only);
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 9);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, 8);
+}
+
+TEST(SectionEvidence, AWallThatCarriesHalfAStepDoesNotPlaceTheJoint) {
+  // The floor drops 15 mm and the roof rises 15 mm: each wall's half step is no more than the
+  // centre line's error sideways, so the roof seen alone at 9-12 does not narrow the stretch.
+  RoofStep r;
+  for (int k = 0; k < 20; ++k) {
+    if (k >= 12) r.walls[k][3] = 0.615;
+    if (k >= 13) r.walls[k][2] = 0.615;
+  }
+  const SectionSplit kept = r.joints(r.walls);
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 9);
+}
+
+TEST(SectionEvidence, OnePoseThatSeesTheStepWithTwoPosesOnEachSideIsAJoint) {
+  // The robot's one stop that saw the step whole (frames 2, 3), two stops before it that
+  // measured only the first size and two after it that measured only the second.
+  const Profile p;
+  std::vector<FrameStationSize> views;
+  add_frame(views, 0, 0, 9, 0.0);
+  add_frame(views, 1, 2, 9, 0.0);
+  add_frame(views, 2, 5, 15, 0.03);
+  add_frame(views, 3, 6, 15, 0.03);
+  add_frame(views, 4, 10, 19, 0.03);
+  add_frame(views, 5, 11, 19, 0.03);
+  const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1, 2, 2, 3, 4}));
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 10);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, -1);
+  // The same stop alone, with one stop on a side: no joint.
+  EXPECT_EQ(keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1, 2, 2, 3, 3})).sections.size(), 1u);
+  // A frame that sees the size stay across contradicts it: no joint.
+  add_frame(views, 6, 4, 14, 0.0);
+  EXPECT_EQ(keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1, 2, 2, 3, 4, 5})).sections.size(), 1u);
+}
+
+TEST(SectionEvidence, AStepSeenFromBothSidesButNotWhereItLiesGoesToTheMiddleOfTheGap) {
+  // Two stops measure 0.80 m at stations 4-7 and 0.83 m at 12-15 in their own frames; nothing
+  // measured 8-11. The step is real, its place anywhere from 8 to 12: the joint goes to 10,
+  // not to 12 where the new size was first measured.
+  Profile p;
+  for (int k = 8; k <= 11; ++k) p.w[k] = p.h[k] = std::nan("");
+  p.split = split_sections(p.w, p.h, kChange, 3);
+  ASSERT_EQ(p.split.sections.size(), 2u);
+  ASSERT_EQ(p.split.sections[1].first, 12);
+  std::vector<FrameStationSize> views;
+  for (int frame : {0, 1}) {
+    for (int k = 4; k <= 7; ++k) views.push_back({frame, k, 0.80, 1.20});
+    for (int k = 12; k <= 15; ++k) views.push_back({frame, k, 0.83, 1.20});
+  }
+  const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1}));
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 10);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, 4);
 }
 
 }  // namespace

@@ -259,6 +259,17 @@ SimConfig girder_config(double length, double spacing, int frames) {
   return c;
 }
 
+TEST(SimGirderTest, NoDiaphragmStandsWithinHalfASpacingOfTheEndWall) {
+  // 30.5 m at 3.79 m: 8 x 3.79 = 30.32 would leave an 18 cm bay; the end bay takes it.
+  std::vector<double> x = TunnelSimulator(girder_config(30.5, 3.79, 10)).diaphragms_x();
+  ASSERT_EQ(x.size(), 7u);
+  EXPECT_NEAR(x.back(), 7 * 3.79, 1e-9);
+  // 30.5 m at 3.2 m: 9 x 3.2 = 28.8 leaves 1.7 m, more than half a spacing: built.
+  x = TunnelSimulator(girder_config(30.5, 3.2, 10)).diaphragms_x();
+  ASSERT_EQ(x.size(), 9u);
+  EXPECT_NEAR(x.back(), 28.8, 1e-9);
+}
+
 sim::RayHit cast(const TunnelSimulator& sim, const Eigen::Vector3d& o, const Eigen::Vector3d& d) {
   return sim.geometry().cast(o, d.normalized());
 }
