@@ -220,12 +220,9 @@ TEST(SectionEvidence, OnePoseThatSeesTheStepWithTwoPosesOnEachSideIsAJoint) {
   // measured only the first size and two after it that measured only the second.
   const Profile p;
   std::vector<FrameStationSize> views;
-  add_frame(views, 0, 0, 9, 0.0);
-  add_frame(views, 1, 2, 9, 0.0);
-  add_frame(views, 2, 5, 15, 0.03);
-  add_frame(views, 3, 6, 15, 0.03);
-  add_frame(views, 4, 10, 19, 0.03);
-  add_frame(views, 5, 11, 19, 0.03);
+  const int first_station[6] = {0, 2, 5, 6, 10, 11}, last_station[6] = {9, 9, 15, 15, 19, 19};
+  for (int frame = 0; frame < 6; ++frame)
+    add_frame(views, frame, first_station[frame], last_station[frame], frame < 2 ? 0.0 : 0.03);
   const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1, 2, 2, 3, 4}));
   ASSERT_EQ(kept.sections.size(), 2u);
   EXPECT_EQ(kept.sections[1].first, 10);
