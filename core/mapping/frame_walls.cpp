@@ -82,6 +82,7 @@ void local_insets(const TunnelMap& m, const FrameWallsOptions& o, std::vector<Wa
         const auto& p = planes[samples[i].plane];
         const double inset = m.walls[c].offset_m - p.first / p.second;
         samples[i].on_surface = inset >= -o.zone_gap_m && inset <= o.max_inset_m;
+        samples[i].inside = inset > o.max_inset_m;
         samples[i].inset_m = samples[i].on_surface ? static_cast<float>(std::max(0.0, inset)) : 0.0f;
       }
     }
@@ -99,6 +100,7 @@ void local_insets(const TunnelMap& m, const FrameWallsOptions& o, std::vector<Wa
         const auto& p = planes[samples[i].plane];
         const double inset = std::isnan(outer.position) ? -1.0 : outer.position + step - p.first / p.second;
         samples[i].on_surface = inset >= -o.zone_gap_m && inset <= o.max_inset_m;
+        samples[i].inside = inset > o.max_inset_m;
         samples[i].inset_m = samples[i].on_surface ? static_cast<float>(std::max(0.0, inset)) : 0.0f;
       }
     }

@@ -23,6 +23,8 @@ struct WallSample {
   float inset_m = 0.0f;        // how far the plane lies inside its wall's outer surface there
                                // (the middle plate: its thickness; an edge band: 0)
   bool on_surface = true;      // the inset is known (false: a plane of no zone of the wall)
+  bool inside = false;         // deeper inside the wall's outer surface than any zone lies:
+                               // not the wall (a plate opening's edge seen from afar, a rib)
 };
 
 // A point on the edge of an opening in a plane across the axis (a manhole's rim): the plate's

@@ -71,7 +71,11 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
   };
   std::unordered_map<long long, Sum> sums;
   for (const WallSample& ws : walls.samples) {
-    if (ws.wall >= 4) continue;
+    // A plane the frame saw deeper inside its own wall than any zone lies is not taken for the
+    // wall: seen through a manhole from 3-4 m, the edges of the opening look like a stretch of
+    // wall just past the plate, 0.1-0.7 m inside, where nothing else measures the wall. A
+    // narrower section the frame did not split off is lost with it; nearer frames measure it.
+    if (ws.wall >= 4 || ws.inside) continue;
     const Eigen::Vector3d p = T * ws.point.cast<double>();
     // The wall's position outward from the line, in the line's own frame at the point's station.
     const LinePosition at = line_.locate(p, camera_node);
