@@ -21,19 +21,47 @@ double weighted_station(const PlateView& v) {
   return w > 0 ? s / w : kNaN;
 }
 
-// Views grouped into plates: sorted by station, chained while closer than the gap.
+using StationedViews = std::vector<std::pair<double, const PlateView*>>;  // sorted by station
+
+// Two faces one frame saw this far apart along the axis are two plates: no pose error lies
+// between them (a manhole plate a couple of decimetres behind a diaphragm, seen through its
+// opening). The pieces of one far plate, split by the depth's steps, lie within 8 cm.
+constexpr double kOneFramesTwoPlatesM = 0.1;
+
+// Splits a chain of views where one frame saw two plates: at the widest gap between them.
+void split_where_one_frame_saw_two(const StationedViews& chain, std::vector<std::vector<const PlateView*>>& out) {
+  for (std::size_t i = 0; i < chain.size(); ++i)
+    for (std::size_t j = i + 1; j < chain.size(); ++j) {
+      if (chain[j].second->frame != chain[i].second->frame || chain[j].first - chain[i].first <= kOneFramesTwoPlatesM)
+        continue;
+      std::size_t cut = i;
+      for (std::size_t k = i; k < j; ++k)
+        if (chain[k + 1].first - chain[k].first > chain[cut + 1].first - chain[cut].first) cut = k;
+      split_where_one_frame_saw_two(StationedViews(chain.begin(), chain.begin() + static_cast<long>(cut) + 1), out);
+      split_where_one_frame_saw_two(StationedViews(chain.begin() + static_cast<long>(cut) + 1, chain.end()), out);
+      return;
+    }
+  out.emplace_back();
+  for (const auto& [station, view] : chain) out.back().push_back(view);
+}
+
+// Views grouped into plates: sorted by station, chained while closer than the gap, and split
+// where one frame saw two plates.
 std::vector<std::vector<const PlateView*>> group_views(const std::vector<PlateView>& views, double gap) {
-  std::vector<std::pair<double, const PlateView*>> order;
+  StationedViews order;
   for (const PlateView& v : views)
     if (!v.samples.empty()) order.push_back({weighted_station(v), &v});
   std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::vector<const PlateView*>> groups;
-  double last = -1e300;
-  for (const auto& [s, v] : order) {
-    if (groups.empty() || s - last > gap) groups.emplace_back();
-    groups.back().push_back(v);
-    last = s;
+  StationedViews chain;
+  for (const auto& entry : order) {
+    if (!chain.empty() && entry.first - chain.back().first > gap) {
+      split_where_one_frame_saw_two(chain, groups);
+      chain.clear();
+    }
+    chain.push_back(entry);
   }
+  if (!chain.empty()) split_where_one_frame_saw_two(chain, groups);
   return groups;
 }
 

@@ -60,11 +60,11 @@ struct CentrelinePoint {
 };
 
 struct GirderStructureOptions {
-  double plate_gap_m = 0.25;         // views of plates closer than this along the axis are one
+  double plate_gap_m = 0.12;         // views of plates closer than this along the axis are one
   double min_plate_fraction = 0.3;   // a plate closes at least this part of the cross-section
   // ... or this much, where the cross-section is unknown; or this much inside both sections
   // beside it, where the frames saw it only in part (through another plate's opening)
-  double min_plate_area_m2 = 0.15;
+  double min_plate_area_m2 = 0.10;
   double cell_m = 0.05;              // area cells
   int min_rim_points = 40;
   int min_rim_directions = 7;        // of 8 around the centre, each with a few rim points

@@ -177,6 +177,43 @@ TEST(GirderPlates, APlateSeenOnlyThroughTheOpeningBeforeItIsStillAPlate) {
   EXPECT_LT(g.diaphragms[1].area_m2, 0.3 * 0.90 * 1.20);  // too little of the section by itself
 }
 
+TEST(GirderPlates, PlatesAFewCentimetresApartThatOneFrameSawAreTwo) {
+  // A diaphragm at 3 m and a plate 11 cm behind it (within the 12 cm that chains views of one
+  // plate): frame 0 saw both, the second through the first's opening; frames 1 and 2 saw the
+  // first, frame 3 the second (from inside the opening). One frame's two faces have no pose
+  // error between them.
+  const StationMap map = two_section_map();
+  const auto in_manhole = [](double y, double z) { return std::pow(y / 0.25, 2) + std::pow(z / 0.35, 2) < 1.0; };
+  const auto plate = [&](double y, double z) { return !in_manhole(y, z); };
+  std::vector<PlateView> views{face_view(0, 3.0, plate), face_view(0, 3.11, in_manhole), face_view(1, 3.0, plate),
+                               face_view(2, 3.0, plate), face_view(3, 3.11, plate)};
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 2u);
+  EXPECT_NEAR(g.diaphragms[0].station_m, 3.0, 1e-9);
+  EXPECT_EQ(g.diaphragms[0].seen_by_frames, 3);
+  EXPECT_NEAR(g.diaphragms[1].station_m, 3.11, 1e-9);
+  EXPECT_EQ(g.diaphragms[1].seen_by_frames, 2);
+
+  // Without frame 0 nothing tells them apart from one plate seen with 11 cm of pose error.
+  views.erase(views.begin(), views.begin() + 2);
+  EXPECT_EQ(build_girder_structure(map, views).diaphragms.size(), 1u);
+}
+
+TEST(GirderPlates, PlatesTwentyCentimetresApartAreTwoWhoeverSawThem) {
+  // The field preset's manhole plate 19 cm behind a diaphragm: the frames before the diaphragm
+  // saw the diaphragm, those in its opening the plate behind it, from 0.5 m, where the view
+  // spans about 0.6 x 0.45 m: 0.14 m2 of plate around the opening.
+  const StationMap map = two_section_map();
+  const auto plate = [](double y, double z) { return std::pow(y / 0.25, 2) + std::pow(z / 0.35, 2) >= 1.0; };
+  const auto near_view = [&](double y, double z) { return plate(y, z) && std::abs(y) < 0.35 && std::abs(z) < 0.25; };
+  std::vector<PlateView> views{face_view(0, 4.81, plate), face_view(1, 4.81, plate), face_view(2, 5.0, near_view),
+                               face_view(3, 5.0, near_view)};
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 2u);
+  EXPECT_NEAR(g.diaphragms[0].station_m, 4.81, 1e-9);
+  EXPECT_NEAR(g.diaphragms[1].station_m, 5.0, 1e-9);
+}
+
 TEST(GirderPlates, AFaceInsideTheSectionMustStillBeAsLargeAsAPlate) {
   // A 0.25 x 0.25 m face in the middle of the passage (a bracket, a stiffener's end): 0.06 m2.
   const StationMap map = two_section_map();
