@@ -61,7 +61,9 @@ nlohmann::json girder_json(const GirderResult& r) {
           {"width_error_mm", distribution(s.width_error_mm)},
           {"height_error_mm", distribution(s.height_error_mm)},
           {"sections", {{"true", s.sections_true}, {"found", s.sections_found}, {"phantom", s.phantom_sections}}},
-          {"joints", {{"true", s.joints_true}, {"found", s.joints_found}}},
+          {"joints",
+           {{"true", s.joints_true}, {"found", s.joints_found}, {"within_stated_uncertainty", s.joints_within_stated},
+            {"error_mm", distribution(s.joint_error_mm)}}},
           {"plates",
            {{"true", s.plates_true}, {"within_tolerance", s.plates_matched}, {"missed", s.plates_missed},
             {"invented", s.plates_invented}, {"error_mm", distribution(s.plate_error_mm)}}},
@@ -82,8 +84,8 @@ nlohmann::json girder_json(const GirderResult& r) {
 
 // The family's distributions over the girders with `drifted` poses.
 nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
-  std::vector<double> w, h, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, along, across, vertical, ms;
-  int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, plates = 0, matched = 0,
+  std::vector<double> w, h, joint, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, along, across, vertical, ms;
+  int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, joints_stated = 0, plates = 0, matched = 0,
       missed = 0, invented = 0, unmeasured = 0, kept = 0, refined = 0;
   for (const GirderResult& r : results) {
     if (r.draw.drifted != drifted) continue;
@@ -98,7 +100,8 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
     ms.push_back(s.ms_per_frame);
     if (s.poses_kept) ++refined, kept += *s.poses_kept ? 1 : 0;
     if (r.draw.constant_section) ++constant, phantom += s.phantom_sections > 0 ? 1 : 0;
-    joints += s.joints_true, joints_found += s.joints_found;
+    joints += s.joints_true, joints_found += s.joints_found, joints_stated += s.joints_within_stated;
+    append(joint, s.joint_error_mm);
     plates += s.plates_true, matched += s.plates_matched, missed += s.plates_missed;
     invented += s.plates_invented, unmeasured += s.manholes_unmeasured;
   }
@@ -107,7 +110,9 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
           {"height_error_mm", distribution(h)},
           {"constant_section_girders", constant},
           {"girders_with_phantom_sections", phantom},
-          {"joints", {{"true", joints}, {"found", joints_found}}},
+          {"joints",
+           {{"true", joints}, {"found", joints_found}, {"within_stated_uncertainty", joints_stated},
+            {"error_mm", distribution(joint)}}},
           {"plates", {{"true", plates}, {"within_tolerance", matched}, {"missed", missed}, {"invented", invented},
                       {"error_mm", distribution(plate)}}},
           {"manhole_width_error_mm", distribution(mw)},
@@ -199,6 +204,12 @@ std::string girders_markdown(const nlohmann::json& report) {
     return std::to_string(f["joints"]["found"].get<int>()) + " of " + std::to_string(f["joints"]["true"].get<int>());
   };
   row("joints found within 0.2 m", joints(e), joints(d));
+  const auto stated = [](const nlohmann::json& f) {
+    return std::to_string(f["joints"]["within_stated_uncertainty"].get<int>()) + " of " +
+           std::to_string(f["joints"]["true"].get<int>());
+  };
+  row("joints within the uncertainty the map states", stated(e), stated(d));
+  row("joint position (mm)", cell(e["joints"]["error_mm"]), cell(d["joints"]["error_mm"]));
   const auto plates = [](const nlohmann::json& f) {
     const nlohmann::json& p = f["plates"];
     return std::to_string(p["within_tolerance"].get<int>()) + " of " + std::to_string(p["true"].get<int>()) +

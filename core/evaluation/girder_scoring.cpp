@@ -79,13 +79,24 @@ void score_sections(const StationMap& m, const TruthLine& line, const std::vecto
   for (std::size_t k = 1; k < rooms.size(); ++k)
     if (std::abs(rooms[k].width - rooms[k - 1].width) > 1e-6 || std::abs(rooms[k].height - rooms[k - 1].height) > 1e-6)
       truth_joints.push_back(rooms[k].from);
-  std::vector<double> found;
-  for (std::size_t k = 1; k < m.sections.size(); ++k)
+  std::vector<double> found, stated;
+  for (std::size_t k = 1; k < m.sections.size(); ++k) {
     found.push_back(line.station_of(m.to_world(m.sections[k].from_m, 0.0, 0.0)));
+    stated.push_back(m.sections[k].joint_uncertainty_m);
+  }
   g.sections_true = static_cast<int>(truth_joints.size()) + 1;
   g.sections_found = static_cast<int>(m.sections.size());
   g.joints_true = static_cast<int>(truth_joints.size());
   for (double j : truth_joints) g.joints_found += near_any(j, found, o.joint_tolerance_m) ? 1 : 0;
+  for (double j : truth_joints) {
+    if (found.empty()) break;
+    const auto nearest = std::min_element(found.begin(), found.end(),
+                                          [&](double a, double b) { return std::abs(a - j) < std::abs(b - j); });
+    const double error = *nearest - j;
+    g.joint_error_mm.push_back(error * 1000);
+    // A millimetre of slack: a joint placed exactly one stated step away is within it.
+    g.joints_within_stated += std::abs(error) <= stated[static_cast<std::size_t>(nearest - found.begin())] + 1e-3 ? 1 : 0;
+  }
   for (double f : found) g.phantom_sections += near_any(f, truth_joints, o.joint_tolerance_m) ? 0 : 1;
 }
 

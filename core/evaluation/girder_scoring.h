@@ -15,6 +15,10 @@ struct GirderScore {
   int sections_true = 0, sections_found = 0;
   int phantom_sections = 0;          // sections the truth does not have
   int joints_true = 0, joints_found = 0;  // joints found within joint_tolerance_m
+  // Per true joint, the nearest joint the map placed (signed, mm along the truth's centre line),
+  // and how many of those lie within the uncertainty the map stated for them.
+  std::vector<double> joint_error_mm;
+  int joints_within_stated = 0;
   int plates_true = 0, plates_matched = 0, plates_missed = 0, plates_invented = 0;
   std::vector<double> plate_error_mm;                   // along the axis, signed
   std::vector<double> manhole_width_error_mm, manhole_height_error_mm;

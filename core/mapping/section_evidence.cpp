@@ -121,6 +121,15 @@ SectionRun with_medians(int first, int last, const SectionSplit& split, const st
   return {first, last, median_of_measured(sw), median_of_measured(sh)};
 }
 
+// `run` from `first` to `last` with its sizes taken again: where its own joint lies, and how
+// much of it was seen, stays as it was.
+SectionRun resized(const SectionRun& run, int first, int last, const SectionSplit& split, const std::vector<double>& w,
+                   const std::vector<double>& h) {
+  SectionRun r = with_medians(first, last, split, w, h);
+  r.unseen_joint_stations = run.unseen_joint_stations;
+  return r;
+}
+
 bool differ(const SectionRun& a, const SectionRun& b, double change) {
   return std::abs(b.width_m - a.width_m) > change || std::abs(b.height_m - a.height_m) > change;
 }
@@ -149,7 +158,7 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
     // step that was a short biased run next to a plate is gone once the sides are whole.
     if (confirmed) {
       const int joint = std::clamp(stretch.middle(), last.first + 1, run.last);
-      const SectionRun before = with_medians(last.first, joint - 1, out, width_m, height_m);
+      const SectionRun before = resized(last, last.first, joint - 1, out, width_m, height_m);
       SectionRun after = with_medians(joint, run.last, out, width_m, height_m);
       after.unseen_joint_stations = stretch.unmeasured();
       if (differ(before, after, e.change_m)) {
@@ -158,7 +167,7 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
         continue;
       }
     }
-    last = with_medians(last.first, run.last, out, width_m, height_m);
+    last = resized(last, last.first, run.last, out, width_m, height_m);
   }
   // Merging may leave neighbours of one size (a short biased run kept at a plate, then the run
   // after it merged back): they are one section.
@@ -167,9 +176,7 @@ SectionSplit keep_confirmed_joints(const SectionSplit& split, const std::vector<
   for (const SectionRun& run : out.sections) {
     if (!merged.sections.empty() && !differ(merged.sections.back(), run, e.change_m)) {
       SectionRun& last = merged.sections.back();
-      const int unseen = last.unseen_joint_stations;
-      last = with_medians(last.first, run.last, out, width_m, height_m);
-      last.unseen_joint_stations = unseen;
+      last = resized(last, last.first, run.last, out, width_m, height_m);
     } else
       merged.sections.push_back(run);
   }

@@ -130,5 +130,31 @@ TEST(GirderScoring, APlateTheMapFoundBeyondItsStationsCountsAndOneItDidNotIsNoMi
   EXPECT_EQ(g.plates_missed, 1);
 }
 
+// Two compartments, 0.80 m wide to 5 m and 0.83 m beyond: the map placed their joint at 5.3 m.
+TEST(GirderScoring, AJointIsScoredAgainstTheUncertaintyTheMapStatedForIt) {
+  StraightGirder t;
+  t.truth["girder"]["compartments"] = {{{"from_m", 0.0}, {"to_m", 5.0}, {"width_m", 0.80}, {"height_m", 1.2}},
+                                       {{"from_m", 5.0}, {"to_m", 10.0}, {"width_m", 0.83}, {"height_m", 1.2}}};
+  Section before, after;
+  before.from_m = 1.0, before.to_m = 5.3, after.from_m = 5.3, after.to_m = 8.0;
+  after.joint_seen = false, after.joint_uncertainty_m = 0.5;  // a plate hid a metre of it
+  t.mapped.mapped.stations.sections = {before, after};
+  GirderScore g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  EXPECT_EQ(g.joints_true, 1);
+  EXPECT_EQ(g.joints_found, 0);  // 0.3 m off: beyond the 0.2 m a found joint may be
+  ASSERT_EQ(g.joint_error_mm.size(), 1u);
+  EXPECT_NEAR(g.joint_error_mm[0], 300.0, 1e-6);
+  EXPECT_EQ(g.joints_within_stated, 1);
+  // The same place stated as seen within one station step is outside what the map claimed.
+  t.mapped.mapped.stations.sections[1].joint_seen = true;
+  t.mapped.mapped.stations.sections[1].joint_uncertainty_m = 0.1;
+  g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  EXPECT_EQ(g.joints_within_stated, 0);
+  t.mapped.mapped.stations.sections[1].from_m = 5.08;
+  g = score_girder(t.mapped, t.truth, nlohmann::json::array());
+  EXPECT_EQ(g.joints_found, 1);
+  EXPECT_EQ(g.joints_within_stated, 1);
+}
+
 }  // namespace
 }  // namespace tunnelmap

@@ -122,6 +122,21 @@ TEST(SectionEvidence, AJointAPlateHidesIsKeptWhenPoseGroupsOnEachSideMeasureThei
   EXPECT_NEAR(kept.sections[1].width_m, 0.83, 1e-9);
 }
 
+TEST(SectionEvidence, AHiddenJointStaysUnseenWhenARunAfterItIsMergedBack) {
+  // As above, and stations 17-19 measure 30 mm wider still in the pooled positions alone (no
+  // frame sees that step): the run joins the section before it, whose joint a plate still hid.
+  Profile p;
+  for (int k = 8; k <= 10; ++k) p.w[k] = p.h[k] = std::nan("");
+  for (int k = 17; k <= 19; ++k) p.w[k] = 0.86;
+  p.split = split_sections(p.w, p.h, kChange, 3);
+  ASSERT_EQ(p.split.sections.size(), 3u);
+  const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(views_either_side_of_a_plate(), {0, 1, 2, 3}, {8}));
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 9);
+  EXPECT_EQ(kept.sections[1].last, 19);
+  EXPECT_EQ(kept.sections[1].unseen_joint_stations, 3);  // 8-10, not seen for having grown
+}
+
 TEST(SectionEvidence, APlateConfirmsNoJointWithoutTwoPoseGroupsOnEachSideOrWhenAFrameSeesAcross) {
   const Profile p;
   const std::vector<FrameStationSize> views = views_either_side_of_a_plate();
