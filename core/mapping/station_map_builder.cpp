@@ -95,9 +95,9 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
   }
 }
 
-std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pieces& pieces,
-                                                                       int k0, int k1,
-                                                                       bool own) const {
+std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pieces& pieces, int k0, int k1,
+                                                                       bool own, const double* known_step,
+                                                                       double* seen_step) const {
   std::vector<WallProfile> out(static_cast<std::size_t>(std::max(0, k1 - k0 + 1)));
   for (WallProfile& w : out) {
     std::fill(std::begin(w.wall_m), std::end(w.wall_m), kNaN);
@@ -144,9 +144,13 @@ std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pie
       if (step > 0) steps[c].push_back(step);
     }
   }
-  if (options_.max_symmetric_step_m <= 0) return out;
   double step[4];
   for (int c = 0; c < 4; ++c) step[c] = median_of_measured(steps[c]);
+  if (seen_step) std::copy(step, step + 4, seen_step);
+  if (options_.max_symmetric_step_m <= 0) return out;
+  if (known_step)
+    for (int c = 0; c < 4; ++c)
+      if (std::isnan(step[c])) step[c] = known_step[c];
   const int opposite[4] = {1, 0, 3, 2};
   for (std::size_t k = 0; k < out.size(); ++k)
     for (int c = 0; c < 4; ++c) {
@@ -172,9 +176,14 @@ std::vector<StationMapBuilder::WallProfile> StationMapBuilder::profile(const Pie
   return out;
 }
 
+std::vector<StationMapBuilder::WallProfile> StationMapBuilder::own_profile(const Pieces& own,
+                                                                           double* seen_step) const {
+  return profile(own, own.begin()->first, own.rbegin()->first, true, known_edge_step_, seen_step);
+}
+
 void StationMapBuilder::own_parts(TunnelMap& m, const Pieces& own, int camera_station) const {
-  const int f0 = own.begin()->first, f1 = own.rbegin()->first;
-  const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+  const int f0 = own.begin()->first;
+  const std::vector<WallProfile> mine = own_profile(own);
   std::vector<double> w(mine.size()), h(mine.size());
   for (std::size_t k = 0; k < mine.size(); ++k) {
     w[k] = mine[k].wall_m[0] + mine[k].wall_m[1];
@@ -239,7 +248,7 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
   // compared, so a change of section is taken once frames see it.
   if (!own.empty()) {
     const int f0 = own.begin()->first, f1 = own.rbegin()->first;
-    const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+    const std::vector<WallProfile> mine = own_profile(own);
     int compared = 0, disagree = 0;
     double worst = 0.0;
     int worst_pair = 0;
@@ -382,8 +391,16 @@ void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& w
 
 void StationMapBuilder::record_frame_dims(int frame, const Pieces& own) {
   if (own.empty()) return;
-  const int f0 = own.begin()->first, f1 = own.rbegin()->first;
-  const std::vector<WallProfile> mine = profile(own, f0, f1, true);
+  const int f0 = own.begin()->first;
+  double seen[4];
+  const std::vector<WallProfile> mine = own_profile(own, seen);
+  for (int c = 0; c < 4; ++c) {
+    std::vector<double>& steps = own_edge_steps_[static_cast<std::size_t>(c)];
+    if (std::isnan(seen[c])) continue;
+    steps.push_back(seen[c]);
+    if (steps.size() > kRecentEdgeSteps) steps.erase(steps.begin());
+    known_edge_step_[c] = median_of_measured(steps);
+  }
   for (const auto& [k, pieces] : own) {
     const WallProfile& w = mine[static_cast<std::size_t>(k - f0)];
     const double width = w.wall_m[0] + w.wall_m[1], height = w.wall_m[2] + w.wall_m[3];

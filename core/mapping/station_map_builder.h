@@ -3,6 +3,8 @@
 // a posed sequence: each frame is compared with the map at the stations it sees, and a wall it
 // did not see is inferred from the map there (or from the design).
 #include <Eigen/Geometry>
+#include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <vector>
@@ -68,7 +70,14 @@ class StationMapBuilder {
                     int frame, Pieces& out) const;
   // Per-station wall positions of `pieces`, stations [k0, k1].
   // `own`: along the frame's own wall normals (a single frame's pieces).
-  std::vector<WallProfile> profile(const Pieces& pieces, int k0, int k1, bool own = false) const;
+  // A wall whose only zone there is its middle plate gets the step between its edge band and
+  // middle plate that the pieces show elsewhere, else `known_step` (per wall; NaN unknown).
+  // `seen_step`, when given, receives the step the pieces show per wall (NaN: none).
+  std::vector<WallProfile> profile(const Pieces& pieces, int k0, int k1, bool own = false,
+                                   const double* known_step = nullptr, double* seen_step = nullptr) const;
+  // A frame's own profile: where the frame did not see both zones of a wall itself, the step
+  // the earlier frames saw is the wall's (its layers are the same along the girder).
+  std::vector<WallProfile> own_profile(const Pieces& own, double* seen_step = nullptr) const;
   // The frame's own measurement along the axis: split where its cross-section changes (a
   // frame that sees two sections measures each part separately), each dimension taken where
   // both walls of its pair were seen at the same station (a tilt of the wall normals then
@@ -93,6 +102,11 @@ class StationMapBuilder {
     double range_m;  // mean depth of the frame's pieces at the station
   };
   void record_frame_dims(int frame, const Pieces& own);
+  // Per wall, the edge steps that the latest frames saw in their own views, and their median
+  // (NaN: none yet). The latest only: a section may build its walls of other plates.
+  static constexpr std::size_t kRecentEdgeSteps = 64;
+  std::array<std::vector<double>, 4> own_edge_steps_;
+  double known_edge_step_[4] = {NAN, NAN, NAN, NAN};
   // The station's width and height over the frames that measured them there: the median of the
   // near views (map.near_range_m) where there are any, else of all. NaN where no frame did.
   struct Dims {

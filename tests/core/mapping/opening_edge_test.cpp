@@ -8,18 +8,11 @@
 #include <cmath>
 #include <string>
 
-#include "core/io/dataset.h"
-#include "core/mapping/dataset_mapping.h"
-#include "core/pipeline/pipeline.h"
 #include "core/sim/sim_config.h"
-#include "core/sim/sim_dataset_writer.h"
-#include "core/util/build_paths.h"
-#include "tests/support/io_temp_dir.h"
+#include "tests/support/mapped_girder.h"
 
 namespace tunnelmap {
 namespace {
-
-using testing::IoTempDir;
 
 // A narrow, tall girder (0.727 x 1.406 m) on a gentle curve with a low rounded-rectangular
 // manhole, plates every 4.27 m (the preset's manhole plate 0.73 m past the first), walked
@@ -54,14 +47,8 @@ SimConfig girder_with_low_openings() {
 }
 
 TEST(OpeningEdge, StationsPastAPlateAreNotMeasuredOnTheEdgesOfItsOpening) {
-  IoTempDir tmp;
   const SimConfig c = girder_with_low_openings();
-  write_sim_dataset(tmp.file("girder"), c);
-  const Dataset ds = read_dataset(tmp.file("girder"));
-  Parameters params;
-  params.load_json_file(std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/field.json");
-  Pipeline pipeline(params);
-  const StationMap map = map_dataset(ds, pipeline, true).mapped.stations;
+  const StationMap map = testing::map_simulated_girder(c);
   ASSERT_TRUE(map.ok) << map.reason;
   int widths = 0, heights = 0;
   for (const Station& s : map.stations) {
