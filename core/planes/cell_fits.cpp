@@ -1,4 +1,5 @@
 #include "core/planes/cell_fits.h"
+#include "core/planes/facing_cells.h"
 
 #include <Eigen/Geometry>  // cross
 #include <algorithm>
@@ -83,8 +84,6 @@ namespace {
 // surfaces set it in any scene with some flat surface at some range; edges and clutter only
 // raise the upper quantiles. 0 with too few fitted cells to tell.
 double noise_coefficient(const CellGrid& grid, std::vector<double>& ratios) {
-  constexpr double kQuantile = 0.25;
-  constexpr std::size_t kMinCells = 16;
   ratios.clear();
   // The quartile of mse / z^4, then its root: the same cell, without a root per cell.
   for (const CellFit& c : grid.cells)
@@ -92,13 +91,19 @@ double noise_coefficient(const CellGrid& grid, std::vector<double>& ratios) {
       const double z2 = c.mean.z() * c.mean.z();
       ratios.push_back(c.mse / (z2 * z2));
     }
-  if (ratios.size() < kMinCells) return 0.0;
-  const auto q = ratios.begin() + static_cast<std::ptrdiff_t>(kQuantile * static_cast<double>(ratios.size() - 1));
-  std::nth_element(ratios.begin(), q, ratios.end());
-  return std::sqrt(*q);
+  return root_of_lower_quartile(ratios);
 }
 
 }  // namespace
+
+double root_of_lower_quartile(std::vector<double>& squares) {
+  constexpr double kQuantile = 0.25;
+  constexpr std::size_t kMinValues = 16;
+  if (squares.size() < kMinValues) return 0.0;
+  const auto q = squares.begin() + static_cast<std::ptrdiff_t>(kQuantile * static_cast<double>(squares.size() - 1));
+  std::nth_element(squares.begin(), q, squares.end());
+  return std::sqrt(*q);
+}
 
 bool smallest_eigenvector(const double s[6], Eigen::Vector3d& v) {
   const Eigen::Vector3d r0(s[0], s[1], s[2]), r1(s[1], s[3], s[4]), r2(s[2], s[4], s[5]);
@@ -190,6 +195,7 @@ void smooth_cell_normals(CellGrid& grid) {
     // 70-80 degrees on the simulated end wall): it stays planar only with a block normal.
     if (cell.planar && !cell.quiet && !cell.block_fitted) cell.planar = false, cell.normal_se = M_PI;
   }
+  admit_cells_facing_the_camera(grid, kMaxBlockF);
 }
 
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
@@ -239,15 +245,21 @@ void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, 
     cell.mse = a[kMse * stride + i];
   }
   const double max_mse = max_rms_m * max_rms_m;
+  for (std::size_t i = 0; i < n; ++i) {
+    CellFit& cell = grid.cells[i];
+    cell.quiet = cell.fitted && cell.mse <= max_mse;
+    cell.normal_se = a[kNormalSe * stride + i];
+  }
   grid.noise_per_m2 = noise_multiple > 0 ? noise_coefficient(grid, grid.ratios) : 0.0;
+  grid.axial_noise_per_m2 = noise_multiple > 0 ? axial_noise_coefficient(grid, grid.ratios) : 0.0;
+  grid.noise_multiple = noise_multiple;
   for (std::size_t i = 0; i < n; ++i) {
     CellFit& cell = grid.cells[i];
     const double noise = noise_multiple * grid.noise_per_m2 * cell.mean.z() * cell.mean.z();
     cell.max_mse = std::max(max_mse, noise * noise);
-    cell.quiet = cell.fitted && cell.mse <= max_mse;
     cell.planar = cell.fitted && cell.mse <= cell.max_mse;
     // Only the growing reads it, and only of planar cells.
-    cell.normal_se = cell.planar ? a[kNormalSe * stride + i] : M_PI;
+    if (!cell.planar) cell.normal_se = M_PI;
   }
 }
 

@@ -40,6 +40,14 @@ struct CellFit {
   }
 };
 
+// A cell the noise along the rays makes planar (facing_cells.h): its block's normal and
+// standard error, and its planarity bound at that facing.
+struct CellAdmission {
+  int cell = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  double se = 0.0, max_mse = 0.0;
+};
+
 struct CellGrid {
   int cell_px = 0;  // side of a cell; cells on the right and bottom edge may be smaller
   int cols = 0, rows = 0;
@@ -48,7 +56,11 @@ struct CellGrid {
   // cells (cell_fit_kernels.h) and ratios, smooth_cell_normals' values and sums.
   std::vector<double> fit_arrays, ratios;
   std::vector<double> row_sums, block_sums;
+  std::vector<char> candidates;          // admit_cells_facing_the_camera's
+  std::vector<CellAdmission> admissions;  // admit_cells_facing_the_camera's
   double noise_per_m2 = 0.0;     // the frame's depth noise, sigma / z^2 (1/m); 0 when not estimated
+  double axial_noise_per_m2 = 0.0;  // the same along the rays (facing_cells.h); 0 when not estimated
+  double noise_multiple = 0.0;      // compute_cell_fits' noise_multiple
 
   int index(int cu, int cv) const { return cv * cols + cu; }
 };
@@ -57,14 +69,20 @@ struct CellGrid {
 // RMS distance to its least-squares plane is at most `max_rms_m`, and planar when that RMS is
 // at most the larger of `max_rms_m` and `noise_multiple` times the frame's depth noise at its
 // range (sigma = c z^2, c estimated from the cells; 0 = no noise bound): far away a flat
-// surface's noise alone exceeds any fixed bound.
+// surface's noise alone exceeds any fixed bound. It also estimates the noise along the rays
+// (axial_noise_per_m2, facing_cells.h).
 void compute_cell_fits(const OrganizedCloud& cloud, int cell_px, int min_valid, double max_rms_m,
                        CellGrid& grid, double noise_multiple = 0.0);
+
+// The square root of the lower quartile of `squares` (reordered), 0 with fewer than 16: a
+// noise estimate that flat surfaces set and edges and clutter only raise the upper quantiles of.
+double root_of_lower_quartile(std::vector<double>& squares);
 
 // Each planar cell's block normal: the least-squares normal of the planar cells among it and
 // its 8 neighbours, when their points lie within the members' planarity bounds of it (mean
 // squared distance); else its own normal. A planar cell that is not quiet and has no block
-// normal stops being planar.
+// normal stops being planar. Then the cells of surfaces facing the camera whose noise only
+// the noise along the rays explains become planar (admit_cells_facing_the_camera).
 // Nine cells' points pin the direction down about nine times better than one cell's (three
 // times the points over three times the extent), as a wider window does for pixel normals.
 void smooth_cell_normals(CellGrid& grid);
