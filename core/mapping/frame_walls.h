@@ -63,6 +63,9 @@ struct FrameWallsOptions {
   double rim_on_plate_m = 0.01;
   int rim_search_px = 6;
   int max_rim_points_per_plate = 800;
+  // Rims farther than this are left to nearer views: there a pixel spans 9 mm (z / f at VGA)
+  // and the plate's depth noise is several times rim_on_plate_m, so the edge is found late.
+  double max_rim_range_m = 5.0;
 };
 
 // The samples of `r` (its map must come from r.planes). Planes of walls the frame measured,

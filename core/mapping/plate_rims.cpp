@@ -60,7 +60,8 @@ void extract_plate_rims(const FrameResult& r, const std::vector<int>& plate_ids,
       for (int u = plane->bbox_u0; u <= plane->bbox_u1; ++u) {
         const std::size_t i = static_cast<std::size_t>(v) * ps.width + u;
         if (ps.labels[i] != id || !OrganizedCloud::valid(r.cloud.points[i])) continue;
-        if (const auto p = rim_point(r, *plane, u, v, o)) out.push_back({*p, id});
+        const auto p = rim_point(r, *plane, u, v, o);
+        if (p && p->norm() <= o.max_rim_range_m) out.push_back({*p, id});
       }
     // Thin out evenly along the scan order (rows), which spreads the kept points over the rim.
     const std::size_t found = out.size() - first;

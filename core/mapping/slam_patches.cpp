@@ -37,23 +37,42 @@ constexpr double kRangeMarginSigmas = 3.0;
 // millimetres thick; the frame's outer surface itself lies within a millimetre).
 constexpr double kInnerInsetM = 0.0025;
 
-// The noise of one pixel of a patch: the sensor's model at its depth, or the scatter of its
-// blocks' means about its plane if larger (a block mean of n pixels scatters by sigma /
-// sqrt(n)). The segmentation keeps the pixels near each plane, so the scatter alone falls
-// short of the noise on far plates.
-double pixel_sigma_m(const Moments& m, double normal_variance, double model_sigma_m) {
-  const double scatter = m.blocks > 0 ? std::sqrt(std::max(0.0, normal_variance) * m.weight / m.blocks) : 0.0;
-  return std::max(scatter, model_sigma_m);
+// The scatter of one pixel of a patch about its plane, from its blocks' means (a block mean of n
+// pixels scatters by sigma / sqrt(n)).
+double pixel_scatter_m(const Moments& m, double normal_variance) {
+  return m.blocks > 0 ? std::sqrt(std::max(0.0, normal_variance) * m.weight / m.blocks) : 0.0;
 }
 
-// What a patch keeps of the depth's quantisation: one step's error (uniform, step / sqrt(12))
-// when all its points sit on one step (a plate seen head-on), averaged over the steps it spans
-// when it runs through many (a wall seen along its length).
-double quantisation_sigma_m(double step_m, const Eigen::Matrix3d& camera_cov) {
+// The noise of one pixel of a patch: the sensor model at its depth, or its scatter if larger.
+// The segmentation keeps the pixels near each plane, so the scatter alone falls short of the
+// noise on far plates.
+double pixel_sigma_m(const Moments& m, double normal_variance, double model_sigma_m) {
+  return std::max(pixel_scatter_m(m, normal_variance), model_sigma_m);
+}
+
+// What a patch keeps of the depth's quantisation. The noise that comes before the rounding
+// dithers it: the mean of many rounded readings of one depth is off by a periodic function of
+// where that depth falls between two steps, whose k-th harmonic has the amplitude
+// step / (pi k) exp(-2 pi^2 k^2 sigma^2 / step^2) for Gaussian noise sigma. Over depths that
+// fall anywhere between steps, the RMS of the sum; without noise it is a step's whole error,
+// step / sqrt(12) (a plate seen head-on, its points all on one step); noise of half a step
+// leaves under 1 % of it. A patch that runs through many steps (a wall seen along its length)
+// averages it further over the steps it spans. The dither is the patch's own scatter, never
+// the sensor model: a camera with steps and little noise keeps its steps' whole error.
+double quantisation_sigma_m(double step_m, double pixel_scatter_m, const Eigen::Matrix3d& camera_cov) {
   if (!(step_m > 0.0)) return 0.0;
+  // The scatter includes the rounding's own (step^2 / 12); only the rest dithers.
+  const double dither_var = std::max(0.0, pixel_scatter_m * pixel_scatter_m - step_m * step_m / 12.0);
+  const double damping = 2.0 * M_PI * M_PI * dither_var / (step_m * step_m);
+  double mean_square = 0.0;
+  for (int k = 1; k <= 64; ++k) {
+    const double amplitude = step_m / (M_PI * k) * std::exp(-damping * k * k);
+    mean_square += 0.5 * amplitude * amplitude;
+    if (amplitude < 1e-4 * step_m) break;
+  }
   const double depth_span = std::sqrt(12.0 * std::max(0.0, camera_cov(2, 2)));
   const double steps = std::max(1.0, depth_span / step_m);
-  return step_m / std::sqrt(12.0 * steps);
+  return std::sqrt(mean_square / steps);
 }
 
 // Centroid, in-plane spread and the patch's own normal; the scatter along that normal (the
@@ -73,7 +92,7 @@ bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
   const double growth = std::max(1.0, z * z);
   const double point_sigma = o.point_sigma_m * growth, floor = o.patch_floor_m * growth;
   out.pixel_sigma_m = pixel_sigma_m(m, eig.eigenvalues()[0], o.point_sigma_m * m.max_depth_m * m.max_depth_m);
-  const double step = quantisation_sigma_m(o.depth_step_m * z * z, cov);
+  const double step = quantisation_sigma_m(o.depth_step_m * z * z, pixel_scatter_m(m, eig.eigenvalues()[0]), cov);
   out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor + step * step);
   return true;
 }

@@ -374,7 +374,10 @@ TEST(PoseRefinement, FramesOfOneArmPoseShareTheirQuantisationError) {
   std::printf("evidence: one frame per pose %.1f, five frames per pose %.1f (threshold %.1f)\n", once.evidence.chi2_gain,
               fivefold.evidence.chi2_gain, fivefold.evidence.threshold);
   EXPECT_EQ(fivefold.evidence.dof, once.evidence.dof);
-  EXPECT_NEAR(fivefold.evidence.chi2_gain, once.evidence.chi2_gain, 0.02 * once.evidence.chi2_gain + 0.5);
+  // Counted as independent they would multiply it by five. What is left is the robust loss: it
+  // bends each patch's cost at two of its own sigmas, and five frames' patches each have
+  // sqrt(5) times one frame's sigma, so a patch off by more than that weighs differently.
+  EXPECT_NEAR(fivefold.evidence.chi2_gain, once.evidence.chi2_gain, 0.2 * once.evidence.chi2_gain + 0.5);
   EXPECT_TRUE(fivefold.given_poses_kept);
   for (std::size_t i = 0; i < fivefold.poses.size(); ++i) EXPECT_TRUE(fivefold.poses[i].isApprox(w.truth[i / 5], 1e-9)) << i;
 }
