@@ -88,8 +88,9 @@ void local_insets(const TunnelMap& m, const FrameWallsOptions& o, std::vector<Wa
     }
     return;
   }
-  for (const SectionRun& run : split.sections)
+  for (std::size_t r = 0; r < split.sections.size(); ++r)
     for (int c = 0; c < 4; ++c) {
+      const SectionRun& run = split.sections[r];
       std::vector<std::size_t> members;
       for (auto it = stations.lower_bound(k0 + run.first); it != stations.end() && it->first <= k0 + run.last; ++it)
         members.insert(members.end(), it->second[c].begin(), it->second[c].end());
@@ -102,6 +103,7 @@ void local_insets(const TunnelMap& m, const FrameWallsOptions& o, std::vector<Wa
         samples[i].on_surface = inset >= -o.zone_gap_m && inset <= o.max_inset_m;
         samples[i].inside = inset > o.max_inset_m;
         samples[i].inset_m = samples[i].on_surface ? static_cast<float>(std::max(0.0, inset)) : 0.0f;
+        samples[i].part = static_cast<std::uint8_t>(std::min<std::size_t>(r, 255));
       }
     }
 }

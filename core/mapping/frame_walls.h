@@ -25,6 +25,8 @@ struct WallSample {
   bool on_surface = true;      // the inset is known (false: a plane of no zone of the wall)
   bool inside = false;         // deeper inside the wall's outer surface than any zone lies:
                                // not the wall (a plate opening's edge seen from afar, a rib)
+  std::uint8_t part = 0;       // the frame's cross-section part it lies in (0: the first or
+                               // only one); zones are layers of one part's wall
 };
 
 // A point on the edge of an opening in a plane across the axis (a manhole's rim): the plate's

@@ -1,5 +1,7 @@
 #include "core/mapping/slam_patches.h"
 
+#include "core/mapping/wall_zone_layers.h"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -33,21 +35,10 @@ struct Moments {
 // deviations of its pixels' noise inside the range (the bias is then below 1 % of it).
 constexpr double kRangeMarginSigmas = 3.0;
 
-// A wall plane this far inside the outer surface is the middle plate (plates are several
-// millimetres thick; the frame's outer surface itself lies within a millimetre).
-constexpr double kInnerInsetM = 0.0025;
-
 // The scatter of one pixel of a patch about its plane, from its blocks' means (a block mean of n
 // pixels scatters by sigma / sqrt(n)).
 double pixel_scatter_m(const Moments& m, double normal_variance) {
   return m.blocks > 0 ? std::sqrt(std::max(0.0, normal_variance) * m.weight / m.blocks) : 0.0;
-}
-
-// The noise of one pixel of a patch: the sensor model at its depth, or its scatter if larger.
-// The segmentation keeps the pixels near each plane, so the scatter alone falls short of the
-// noise on far plates.
-double pixel_sigma_m(const Moments& m, double normal_variance, double model_sigma_m) {
-  return std::max(pixel_scatter_m(m, normal_variance), model_sigma_m);
 }
 
 // What a patch keeps of the depth's quantisation. The noise that comes before the rounding
@@ -91,42 +82,108 @@ bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
   const double z = out.centroid.norm();
   const double growth = std::max(1.0, z * z);
   const double point_sigma = o.point_sigma_m * growth, floor = o.patch_floor_m * growth;
-  out.pixel_sigma_m = pixel_sigma_m(m, eig.eigenvalues()[0], o.point_sigma_m * m.max_depth_m * m.max_depth_m);
-  const double step = quantisation_sigma_m(o.depth_step_m * z * z, pixel_scatter_m(m, eig.eigenvalues()[0]), cov);
+  // One pixel's noise: the sensor model at its depth, or its scatter if larger (the
+  // segmentation keeps the pixels near each plane, so the scatter alone falls short of the
+  // noise on far plates).
+  const double scatter = pixel_scatter_m(m, eig.eigenvalues()[0]);
+  out.pixel_sigma_m = std::max(scatter, o.point_sigma_m * m.max_depth_m * m.max_depth_m);
+  const double step = quantisation_sigma_m(o.depth_step_m * z * z, scatter, cov);
   out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor + step * step);
   return true;
+}
+
+// A block sample's noise along its wall's normal: the depth's noise and steps at its depth
+// move it along its ray (a depth error e moves it by p e / z), which meets a wall seen at a
+// grazing angle almost along the wall.
+double sample_sigma_m(const WallSample& s, const Eigen::Vector3d& outward, const SlamOptions& o) {
+  const Eigen::Vector3d p = s.point.cast<double>();
+  const double z2 = p.z() * p.z();
+  const double step = o.depth_step_m * z2, noise = o.point_sigma_m * z2;
+  const double along_normal = std::abs(outward.dot(p)) / std::max(1e-6, p.z());
+  return std::sqrt(noise * noise + step * step / 12.0) * along_normal / std::sqrt(std::max(1, s.points));
+}
+
+// A frame's cross-section parts whose walls do not step are one surface: the frame splits
+// where its sections seem to change, and on a girder of one section it does so at a sixth of
+// its frames. Per (wall, part), the first part of that wall whose outer surface lies within
+// half a section change (`FrameWallsOptions::section_change_m`) of it.
+std::map<std::pair<int, int>, int> wall_surfaces(const TunnelMap& map, const std::vector<const WallSample*>& samples) {
+  std::map<std::pair<int, int>, std::vector<double>> outer;  // each sample's outer surface
+  for (const WallSample* s : samples)
+    outer[{s->wall, s->part}].push_back(s->inset_m - map.walls[s->wall].normal.dot(s->point.cast<double>()));
+  std::map<std::pair<int, int>, double> median;
+  for (auto& [key, v] : outer) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    median[key] = v[v.size() / 2];
+  }
+  const double same = 0.5 * FrameWallsOptions().section_change_m;
+  std::map<std::pair<int, int>, int> surface;
+  for (const auto& [key, position] : median) {
+    int first = key.second;
+    for (const auto& [other, other_position] : median)
+      if (other.first == key.first && other.second < first && std::abs(other_position - position) < same)
+        first = other.second;
+    surface[key] = first;
+  }
+  return surface;
+}
+
+using BandKey = std::tuple<int, long, float>;  // (wall, band, inset)
+
+// The frame's wall samples by wall, band and zone: the zones of one wall stay apart, each
+// sample on the layer its own position says (core/mapping/wall_zone_layers.h); which of them
+// is the outer surface the frame may misjudge.
+std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
+  std::vector<const WallSample*> kept;
+  for (const WallSample& s : walls.samples) {
+    if (s.wall >= 4 || !s.on_surface || s.point.z() > o.max_wall_depth_m) continue;
+    if (map.walls[s.wall].normal.squaredNorm() < 0.5) continue;
+    kept.push_back(&s);
+  }
+  // Per wall and cross-section part where the wall steps (a joint in view): its zones are
+  // layers of one part's wall.
+  const std::map<std::pair<int, int>, int> surface = wall_surfaces(map, kept);
+  std::map<std::pair<int, int>, std::vector<const WallSample*>> on_wall;
+  std::map<std::pair<int, int>, std::vector<LayerSample>> layer_samples;
+  for (const WallSample* s : kept) {
+    const std::pair<int, int> key{s->wall, surface.at({s->wall, s->part})};
+    on_wall[key].push_back(s);
+    layer_samples[key].push_back({s->point.cast<double>(), sample_sigma_m(*s, -map.walls[s->wall].normal, o), s->inset_m});
+  }
+  std::map<BandKey, Moments> bands;
+  for (const auto& [key, samples] : layer_samples) {
+    const int c = key.first;
+    const std::vector<double> insets = wall_zone_layers(samples, -map.walls[c].normal, axis_cam);
+    for (std::size_t i = 0; i < insets.size(); ++i) {
+      if (std::isnan(insets[i])) continue;
+      const Eigen::Vector3d& p = samples[i].point;
+      const auto band = static_cast<long>(std::floor((camera_station_m + axis_cam.dot(p)) / o.band_m));
+      bands[{c, band, static_cast<float>(insets[i])}].add(p, on_wall[key][i]->points);
+    }
+  }
+  return bands;
 }
 
 }  // namespace
 
 std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
                                       const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
-  // (wall, band, inset): the frame's zones of one wall stay apart (the inset tells them apart
-  // within the frame; which of them is the outer surface it may misjudge).
-  std::map<std::tuple<int, long, float>, Moments> bands;
-  std::map<int, Moments> plates;                   // plane id
-  for (const WallSample& s : walls.samples) {
-    const Eigen::Vector3d p = s.point.cast<double>();
-    if (s.wall == kTransverseSample) {
-      plates[s.plane].add(p, s.points);  // kept or dropped whole, below: a cut per point biases it
-      continue;
-    }
-    if (s.wall >= 4 || !s.on_surface || p.z() > o.max_wall_depth_m) continue;
-    const Wall& wall = map.walls[s.wall];
-    if (wall.normal.squaredNorm() < 0.5) continue;
-    const double station = camera_station_m + axis_cam.dot(p);
-    bands[{s.wall, static_cast<long>(std::floor(station / o.band_m)), s.inset_m}].add(p, s.points);
-  }
+  const std::map<BandKey, Moments> bands = wall_bands(map, walls, camera_station_m, axis_cam, o);
+  std::map<int, Moments> plates;  // plane id
+  for (const WallSample& s : walls.samples)
+    // Kept or dropped whole, below: a cut per point biases it.
+    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
   bool has_inner[4] = {false, false, false, false};
   for (const auto& [key, m] : bands)
-    if (std::get<2>(key) > kInnerInsetM && m.weight >= o.min_patch_points) has_inner[std::get<0>(key)] = true;
+    if (std::get<2>(key) > kMinZoneStepM && m.weight >= o.min_patch_points) has_inner[std::get<0>(key)] = true;
   std::vector<FramePatch> out;
   for (const auto& [key, m] : bands) {
     FramePatch patch;
     if (!reduce(m, o, patch)) continue;
     patch.wall = std::get<0>(key);
     patch.band = std::get<1>(key);
-    const bool inner = std::get<2>(key) > kInnerInsetM;
+    const bool inner = std::get<2>(key) > kMinZoneStepM;
     if (inner) patch.zone = FramePatch::Zone::Inner;
     else if (has_inner[patch.wall]) patch.zone = FramePatch::Zone::Outer;
     patch.normal = -map.walls[patch.wall].normal;
