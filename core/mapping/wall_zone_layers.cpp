@@ -16,8 +16,9 @@ constexpr int kMinSamples = 8;  // fewer place no surface
 
 double weight(const LayerSample& s) { return 1.0 / std::max(1e-12, s.sigma_m * s.sigma_m); }
 
-// The samples' plane insets, clustered (single linkage at `gap`), each cluster at its
-// weighted mean.
+// The samples' plane insets, clustered (single linkage at `gap`), each cluster at its mean
+// weighted by the samples' noise (cluster_zone_positions links alike but weighs by points, and
+// its plain means moved the 100 m girder's corrected poses by up to 0.6 mm).
 std::vector<double> initial_levels(const std::vector<LayerSample>& samples, double gap) {
   std::vector<std::pair<double, double>> insets;
   for (const LayerSample& s : samples) insets.push_back({s.inset_m, weight(s)});
