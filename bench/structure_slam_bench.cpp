@@ -1,8 +1,8 @@
 // Localisation and mapping against the structure (StructureSlam) on the frames' detections:
 //   BM_StructureSlamGirder  a 40 m girder with diaphragms every 4 m and drifting odometry,
 //                           120 frames: counters "ms_per_frame" (each frame's window, the robot
-//                           on the move; budget 10 ms), "batch_ms" (the final optimisation) and
-//                           "landmarks".
+//                           on the move; budget 10 ms), "batch_ms" and "batch_iterations" (the
+//                           final optimisation) and "landmarks".
 //   BM_FuseWithRefinement   the whole fuse_dataset of a 30-frame lab arm sequence with 2 deg/m of
 //                           sag: "fuse_ms" and "refine_share_pct" (budget 20 %).
 //   tunnelmap_bench --benchmark_filter='StructureSlam|Refinement'
@@ -86,7 +86,7 @@ void BM_StructureSlamGirder(benchmark::State& state) {
   }
   const std::vector<int> groups = group_poses(poses, fusion_options(params).pose_group_m);
   double frames_ms = 0.0, worst_frame_ms = 0.0, batch_ms = 0.0;
-  int runs = 0, landmarks = 0;
+  int runs = 0, landmarks = 0, batch_iterations = 0;
   for (auto _ : state) {
     StructureSlam slam(slam_options(params));
     const auto t0 = std::chrono::steady_clock::now();
@@ -99,6 +99,7 @@ void BM_StructureSlamGirder(benchmark::State& state) {
     frames_ms += std::chrono::duration<double, std::milli>(t1 - t0).count();
     batch_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
     landmarks = slam.landmarks();
+    batch_iterations = p.iterations;
     ++runs;
     benchmark::DoNotOptimize(p.poses.data());
   }
@@ -106,6 +107,7 @@ void BM_StructureSlamGirder(benchmark::State& state) {
   state.counters["worst_frame_ms"] = worst_frame_ms;
   state.counters["batch_ms"] = runs ? batch_ms / runs : 0.0;
   state.counters["landmarks"] = landmarks;
+  state.counters["batch_iterations"] = batch_iterations;
   state.counters["frames"] = static_cast<double>(poses.size());
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // Parameters of localisation and mapping against the girder's structure (slam.*), declared
 // once, and the options StructureSlam takes. See docs/tunnel-map.md.
+#include <cmath>
+
 #include "core/normals/cloud_options.h"
 #include "core/params/parameter_key.h"
 
@@ -30,6 +32,13 @@ inline constexpr ParameterKey<double> wall_continuity_mm{
     "compartment to the next (applied by the final optimisation, never to the poses while the "
     "walk runs, and only when the measurements alone demand a correction); 0 leaves each "
     "compartment free"};
+inline constexpr ParameterKey<double> wall_turn_deg{
+    "slam.wall_turn_deg", "deg", 0.05, 0.0, 10.0, 0.01, Stage::Map, "Wall roll and kink",
+    "How far a wall may roll about the girder's axis across a diaphragm (a change of cross-fall, "
+    "plate distortion), and how far its bend may kink there (a curve or camber turns evenly): "
+    "it ties each compartment's roll and turn to the last, which nothing else across a plate "
+    "does but the odometry (applied with the wall continuity, slam.wall_continuity_mm); 0 "
+    "leaves them free"};
 inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};
@@ -84,6 +93,7 @@ struct SlamOptions {
   bool odometry_in_world = slam_keys::odometry_in_world.default_value;
   double band_m = slam_keys::band_m.default_value;
   double wall_continuity_m = mm_to_m(slam_keys::wall_continuity_mm.default_value);
+  double wall_turn_rad = slam_keys::wall_turn_deg.default_value * M_PI / 180.0;
   double max_continuity_gap_m = 5.0;  // no tie across a longer unseen stretch of wall
   double max_wall_depth_m = slam_keys::max_wall_depth_m.default_value;
   double max_plate_depth_m = slam_keys::max_plate_depth_m.default_value;

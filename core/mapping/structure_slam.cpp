@@ -27,7 +27,9 @@ PoseGraphSolution solve_under_evidence(PoseGraph graph, const PoseGraphOptions& 
                                        double sigmas, AtGiven at_given, CorrectionEvidence& evidence,
                                        bool& kept) {
   std::vector<PlaneContinuity> ties;
+  std::vector<PlaneBend> bends;
   ties.swap(graph.continuities);
+  bends.swap(graph.bends);
   PoseGraphSolution s = solve_pose_graph(graph, options);
   kept = false;
   evidence = correction_evidence(0.0, 0.0, free_poses, 0.0);
@@ -37,8 +39,9 @@ PoseGraphSolution solve_under_evidence(PoseGraph graph, const PoseGraphOptions& 
     kept = !evidence.significant;
     if (kept) return given;
   }
-  if (ties.empty()) return s;
+  if (ties.empty() && bends.empty()) return s;
   graph.continuities = std::move(ties);
+  graph.bends = std::move(bends);
   graph.poses = s.poses;
   graph.planes = s.planes;
   return solve_pose_graph(graph, options);
@@ -70,7 +73,12 @@ void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
     g.up = prev.up;
     const Eigen::Isometry3d relative = prev.odometry.inverse() * pose;
     g.station_m = prev.station_m + prev.axis.dot(pose.translation() - prev.odometry.translation());
-    graph_.poses.push_back(graph_.poses.back() * relative);
+    // Where the odometry factor expects it: with world-frame drift the step is the world's,
+    // whatever the heading's correction (composed in the camera's frame, a heading 5 degrees
+    // off would start each group 5 cm sideways, past where its walls land on the map's).
+    Eigen::Isometry3d start = graph_.poses.back() * relative;
+    if (options_.odometry_in_world) start.translation() = graph_.poses.back().translation() + (pose.translation() - prev.odometry.translation());
+    graph_.poses.push_back(start);
     graph_.fixed.push_back(false);
     const double d = relative.translation().norm();
     GraphOdometry o;
@@ -225,15 +233,14 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
   const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
   // The point between the two, held by the current pose so that it moves with the map.
   auto tie = [&](const ZoneLayer& other, long other_band) {
-    if (other.plane == plane) return;
-    const double lo = (std::min(other_band, patch.band) + 1) * options_.band_m;
-    const double hi = std::max(other_band, patch.band) * options_.band_m;
-    const bool across_plate = std::any_of(plates_.begin(), plates_.end(), [&](const KnownPlate& k) {
-      return k.station_m >= lo - 0.5 * options_.band_m && k.station_m <= hi + 0.5 * options_.band_m;
-    });
-    if (!across_plate) return;
-    const Eigen::Vector3d between = graph_.poses.back().inverse() * (0.5 * (other.point + point));
-    graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between, options_.wall_continuity_m});
+    if (other.plane == plane || !plate_between(other_band, patch.band)) return;
+    const Eigen::Isometry3d& pose = graph_.poses.back();
+    const Eigen::Vector3d between = pose.inverse() * (0.5 * (other.point + point));
+    // Across the wall, perpendicular to the girder: the normals agree there unless it rolls.
+    const Eigen::Vector3d normal = graph_.planes[static_cast<std::size_t>(plane)].normal;
+    const Eigen::Vector3d across = pose.linear().transpose() * groups_.back().axis.cross(normal).normalized();
+    graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between,
+                                   options_.wall_continuity_m, across, options_.wall_turn_rad});
   };
   if (it != zone_layers_.begin()) {
     const auto below = std::prev(it);
@@ -242,6 +249,40 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
   const auto above = std::next(it);
   if (above != zone_layers_.end() && above->first.first == kind && above->first.second - patch.band <= max_gap)
     tie(above->second, above->first.second);
+  bend_across_plates(it);
+}
+
+// A plate the walk has seen lies between bands `a` and `b` of a wall.
+bool StructureSlam::plate_between(long a, long b) const {
+  const double lo = (std::min(a, b) + 1) * options_.band_m;
+  const double hi = std::max(a, b) * options_.band_m;
+  return std::any_of(plates_.begin(), plates_.end(), [&](const KnownPlate& k) {
+    return k.station_m >= lo - 0.5 * options_.band_m && k.station_m <= hi + 0.5 * options_.band_m;
+  });
+}
+
+// The continuity ties hold the walls' distances across a plate, and their roll, but let them
+// turn there as a curving girder does: each compartment could still turn or pitch by what
+// the odometry allows over the climb. A girder's curve does not kink at a plate, so every
+// three neighbouring bands of a kind that span a plate bend evenly: the middle one's
+// direction lies between the outer two's.
+void StructureSlam::bend_across_plates(ZoneLayers::iterator added) {
+  if (!(options_.wall_turn_rad > 0.0)) return;
+  const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
+  const int kind = added->first.first;
+  auto first = added;
+  for (int k = 0; k < 2 && first != zone_layers_.begin() && std::prev(first)->first.first == kind; ++k) --first;
+  std::vector<ZoneLayers::iterator> run;
+  for (auto it = first; it != zone_layers_.end() && it->first.first == kind && run.size() < 5; ++it) run.push_back(it);
+  for (std::size_t i = 0; i + 2 < run.size(); ++i) {
+    const long a = run[i]->first.second, b = run[i + 1]->first.second, c = run[i + 2]->first.second;
+    const bool has_added = run[i] == added || run[i + 1] == added || run[i + 2] == added;
+    if (!has_added || c - a > max_gap || !plate_between(a, c)) continue;
+    const int pa = run[i]->second.plane, pb = run[i + 1]->second.plane, pc = run[i + 2]->second.plane;
+    if (pa == pb || pb == pc || pa == pc) continue;
+    const double weight_c = static_cast<double>(b - a) / static_cast<double>(c - a);
+    graph_.bends.push_back({pa, pb, pc, 1.0 - weight_c, weight_c, options_.wall_turn_rad});
+  }
 }
 
 void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {

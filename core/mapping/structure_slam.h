@@ -85,8 +85,11 @@ class StructureSlam {
     Eigen::Vector3d point;  // world, where it was first seen
   };
   // (wall * 2 + 1 for the middle plate, band) -> that zone's layer there.
-  std::map<std::pair<int, long>, ZoneLayer> zone_layers_;
+  using ZoneLayers = std::map<std::pair<int, long>, ZoneLayer>;
+  ZoneLayers zone_layers_;
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
+  void bend_across_plates(ZoneLayers::iterator added);
+  bool plate_between(long a, long b) const;
   struct KnownPlate {
     double station_m;    // along the walk (odometry), where it was first seen
     double seen_from_m;  // the camera's station when it was last seen

@@ -109,6 +109,20 @@ struct ContinuityResidual {
   }
 };
 
+// Two planes' normals along one direction (held in a pose's frame), against each other.
+struct TurnResidual {
+  Eigen::Vector3d across;
+  double inv_sigma;
+
+  template <typename T>
+  bool operator()(const T* q, const T* na, const T* nb, T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> Q(q);
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Na(na), Nb(nb);
+    residual[0] = T(inv_sigma) * (Q * across.cast<T>()).dot(Na - Nb);
+    return true;
+  }
+};
+
 void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double robust_sigmas,
                     std::vector<PoseBlock>& poses, std::vector<PlaneBlock>& planes) {
   PoseBlock& pose = poses[static_cast<std::size_t>(c.pose)];
@@ -117,6 +131,30 @@ void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double ro
   auto* cost = new ceres::AutoDiffCostFunction<ContinuityResidual, 1, 4, 3, 3, 1, 3, 1>(
       new ContinuityResidual{c.point, 1.0 / c.sigma_m});
   problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, a.n, a.d, b.n, b.d);
+  if (!(c.sigma_rad > 0.0)) return;
+  auto* turn = new ceres::AutoDiffCostFunction<TurnResidual, 1, 4, 3, 3>(new TurnResidual{c.across, 1.0 / c.sigma_rad});
+  problem.AddResidualBlock(turn, new ceres::HuberLoss(robust_sigmas), pose.q, a.n, b.n);
+}
+
+// The middle plane's normal against the weighted mean of its neighbours' (a normal's length
+// stays 1 on its manifold, so the residual's part along it is second order).
+struct BendResidual {
+  double weight_a, weight_c, inv_sigma;
+
+  template <typename T>
+  bool operator()(const T* na, const T* nb, const T* nc, T* residual) const {
+    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Na(na), Nb(nb), Nc(nc);
+    Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
+    r = T(inv_sigma) * (Nb - T(weight_a) * Na - T(weight_c) * Nc);
+    return true;
+  }
+};
+
+void add_bend(ceres::Problem& problem, const PlaneBend& b, double robust_sigmas, std::vector<PlaneBlock>& planes) {
+  auto* cost = new ceres::AutoDiffCostFunction<BendResidual, 3, 3, 3, 3>(
+      new BendResidual{b.weight_a, b.weight_c, 1.0 / b.sigma_rad});
+  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), planes[static_cast<std::size_t>(b.a)].n,
+                           planes[static_cast<std::size_t>(b.b)].n, planes[static_cast<std::size_t>(b.c)].n);
 }
 
 void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<PoseBlock>& poses) {
@@ -188,6 +226,7 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
   for (const PlanePatch& p : graph.patches)
     add_patch(problem, p, options.robust_sigmas, held(graph, p.pose), poses, planes);
   for (const PlaneContinuity& c : graph.continuities) add_continuity(problem, c, options.robust_sigmas, poses, planes);
+  for (const PlaneBend& b : graph.bends) add_bend(problem, b, options.robust_sigmas, planes);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(poses[i].q)) continue;
     problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);

@@ -38,11 +38,25 @@ struct PlanePatch {
 // them, they lie the same distance from it within `sigma_m`. Their directions may differ (a
 // curving wall): half-way between two tangents of a smooth curve, both are off it alike. The
 // point is held in the frame of `pose`, so that it moves with the map.
+// With `sigma_rad` > 0 their normals also agree along `across` (a unit direction in the
+// planes, held in the pose's frame): the planes may turn about any axis but the one
+// perpendicular to `across` in them, i.e. a wall bends along the girder but does not roll.
 struct PlaneContinuity {
   int a = 0, b = 0;
   int pose = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // in the pose's frame
   double sigma_m = 0.002;
+  Eigen::Vector3d across = Eigen::Vector3d::Zero();  // in the pose's frame
+  double sigma_rad = 0.0;                            // 0: directions free
+};
+
+// Three stretches of one wall in order along it, `a` and `c` either side of `b`: a girder's
+// curve does not kink at a plate, so b's direction lies between theirs as b lies between them
+// (`weight_a` + `weight_c` = 1), to within `sigma_rad`.
+struct PlaneBend {
+  int a = 0, b = 0, c = 0;
+  double weight_a = 0.5, weight_c = 0.5;
+  double sigma_rad = 0.001;
 };
 
 struct PoseGraph {
@@ -52,6 +66,7 @@ struct PoseGraph {
   std::vector<GraphPlane> planes;        // initial values
   std::vector<PlanePatch> patches;
   std::vector<PlaneContinuity> continuities;
+  std::vector<PlaneBend> bends;
 };
 
 struct PoseGraphOptions {

@@ -180,7 +180,9 @@ TEST(PoseGraph, ExactPosesAndExactPatchesStayWhereTheyAre) {
   std::vector<bool> seen(w.planes.size(), false);
   for (const PlanePatch& p : w.graph.patches) seen[static_cast<std::size_t>(p.plane)] = true;
   for (std::size_t k = 0; k < w.planes.size(); ++k)
-    if (seen[k]) EXPECT_NEAR(s.planes[k].offset, w.planes[k].offset, 1e-4) << k;
+    if (seen[k]) {
+      EXPECT_NEAR(s.planes[k].offset, w.planes[k].offset, 1e-4) << k;
+    }
 }
 
 TEST(PoseGraph, WallsAndPlatesTakeOutTheDriftAcrossTheAxisAndAlongIt) {
@@ -234,6 +236,63 @@ TEST(PoseGraph, WithoutPlatesTheAxisIsLeftToOdometryAndReportedDegenerate) {
   EXPECT_LT(H(3, 3), 1e-6 * top);  // translation along x: no information
   EXPECT_GT(H(4, 4), 1e-3 * top);  // across it: walls
   EXPECT_GT(H(5, 5), 1e-3 * top);
+}
+
+// Two stretches of floor either side of a plate, x < 0 seen from pose 0 (held) and x > 0 from
+// pose 1 only, whose odometry says it rolled by 1 degree (loosely: 5 degrees). Tied at x = 0
+// with or without their roll: the floor beyond the plate, and pose 1 with it, rolls as the
+// odometry says unless the roll is tied.
+double roll_after_tie_deg(double sigma_rad) {
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+  const Eigen::Isometry3d A = camera_at(-2.0, 0.0, 0.6), B = camera_at(0.5, 0.0, 0.6);
+  PoseGraph g;
+  Eigen::Isometry3d rolled = B;
+  rolled.linear() = Eigen::AngleAxisd(M_PI / 180.0, X).toRotationMatrix() * B.linear();
+  g.poses = {A, rolled};
+  g.fixed = {true, false};
+  g.planes = {{-Z, 0.0}, {-Z, 0.0}};
+  g.patches.push_back(patch_of(A, 0, 0, Eigen::Vector3d::Zero(), X, Y, -1.5, -0.1, -0.4, 0.4));
+  g.patches.push_back(patch_of(B, 1, 1, Eigen::Vector3d::Zero(), X, Y, 0.1, 3.0, -0.4, 0.4));
+  GraphOdometry o;
+  o.from = 0, o.to = 1;
+  o.relative = A.inverse() * rolled;
+  o.sigma_m = 0.001, o.sigma_rad = 5.0 * M_PI / 180.0;
+  g.odometry.push_back(o);
+  PlaneContinuity tie;
+  tie.a = 0, tie.b = 1, tie.pose = 1;
+  tie.point = B.inverse() * Eigen::Vector3d::Zero();
+  tie.across = B.linear().transpose() * Y;
+  tie.sigma_rad = sigma_rad;
+  g.continuities.push_back(tie);
+  const PoseGraphSolution s = solve_pose_graph(g);
+  return angle_deg(s.poses[1].linear(), B.linear());
+}
+
+TEST(PoseGraph, AWallTiedAcrossAPlateDoesNotRollThere) {
+  const double free = roll_after_tie_deg(0.0), tied = roll_after_tie_deg(0.05 * M_PI / 180.0);
+  EXPECT_NEAR(free, 1.0, 0.05);
+  EXPECT_LT(tied, 0.01);
+}
+
+TEST(PoseGraph, ThreeStretchesOfAWallBendEvenly) {
+  // Three planes of one wall, y = x tan(t) for t = 0, 1 and 3 degrees at x = 0, 1, 2 m: the
+  // bend puts the middle one's direction half-way between the outer two's, 1.5 degrees, and
+  // leaves a turn that is even (the outer two held by their patches) as it is.
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY();
+  auto wall = [&](double deg) { return GraphPlane{Eigen::AngleAxisd(deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()) * Y, 0.0}; };
+  PoseGraph g;
+  g.poses = {Eigen::Isometry3d::Identity()};
+  g.fixed = {true};
+  g.planes = {wall(0.0), wall(1.0), wall(3.0)};
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  for (int k : {0, 2}) {
+    const Eigen::Vector3d along = Eigen::AngleAxisd((k == 0 ? 0.0 : 3.0) * M_PI / 180.0, Eigen::Vector3d::UnitZ()) * X;
+    g.patches.push_back(patch_of(I, 0, k, Eigen::Vector3d::Zero(), along, Eigen::Vector3d::UnitZ(), -0.5, 0.5, 0.0, 1.0));
+  }
+  g.bends.push_back({0, 1, 2, 0.5, 0.5, 0.05 * M_PI / 180.0});
+  const PoseGraphSolution s = solve_pose_graph(g);
+  const double middle_deg = std::atan2(-s.planes[1].normal.x(), s.planes[1].normal.y()) * 180.0 / M_PI;
+  EXPECT_NEAR(middle_deg, 1.5, 0.01);
 }
 
 }  // namespace
