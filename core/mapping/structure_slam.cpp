@@ -54,7 +54,8 @@ Eigen::Vector3d oriented(const Eigen::Vector3d& axis, const Eigen::Vector3d& for
 
 }  // namespace
 
-StructureSlam::StructureSlam(SlamOptions options) : options_(options) {}
+StructureSlam::StructureSlam(SlamOptions options)
+    : options_(options), plates_({options.odometry_m_per_sqrt_m, kMinPlateReachM, options.plate_gate_m}) {}
 
 void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
   Group g;
@@ -108,25 +109,11 @@ int StructureSlam::add_plane(const Eigen::Vector3d& normal, double offset) {
 
 int StructureSlam::plate_landmark(const FramePatch& patch, const Eigen::Isometry3d& camera_to_world,
                                   double camera_station_m) {
-  // The nearest known plate along the girder within reach of the odometry's drift since that
-  // plate was last seen (four standard deviations, at least 5 cm, at most the gate); else a
-  // new plate. Two plates a few decimetres apart then stay two.
-  KnownPlate* best = nullptr;
-  double best_gap = options_.plate_gate_m;
-  for (KnownPlate& k : plates_) {
-    const double walked = std::abs(camera_station_m - k.seen_from_m);
-    const double reach = std::clamp(4.0 * options_.odometry_m_per_sqrt_m * std::sqrt(walked), kMinPlateReachM,
-                                    options_.plate_gate_m);
-    const double gap = std::abs(k.station_m - patch.station_m);
-    if (gap <= reach && gap < best_gap) best_gap = gap, best = &k;
-  }
-  if (!best) {
+  // A view of a known plate (core/mapping/plate_tracks.h), or a new plate's landmark.
+  return plates_.view(patch.station_m, patch.sigma_m, camera_station_m, [&] {
     const Eigen::Vector3d normal = camera_to_world.linear() * patch.normal;
-    plates_.push_back({patch.station_m, camera_station_m, add_plane(normal, normal.dot(camera_to_world * patch.centroid))});
-    return plates_.back().plane;
-  }
-  best->seen_from_m = camera_station_m;
-  return best->plane;
+    return add_plane(normal, normal.dot(camera_to_world * patch.centroid));
+  });
 }
 
 std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>& patches,
@@ -256,9 +243,7 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
 bool StructureSlam::plate_between(long a, long b) const {
   const double lo = (std::min(a, b) + 1) * options_.band_m;
   const double hi = std::max(a, b) * options_.band_m;
-  return std::any_of(plates_.begin(), plates_.end(), [&](const KnownPlate& k) {
-    return k.station_m >= lo - 0.5 * options_.band_m && k.station_m <= hi + 0.5 * options_.band_m;
-  });
+  return plates_.any_within(lo - 0.5 * options_.band_m, hi + 0.5 * options_.band_m);
 }
 
 // The continuity ties hold the walls' distances across a plate, and their roll, but let them

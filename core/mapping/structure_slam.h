@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/mapping/frame_walls.h"
+#include "core/mapping/plate_tracks.h"
 #include "core/mapping/pose_refinement.h"
 #include "core/mapping/slam_options.h"
 #include "core/mapping/slam_patches.h"
@@ -44,7 +45,7 @@ class StructureSlam {
   // group's own view of the girder's axis (so it follows a curving girder).
   std::vector<double> group_stations_m() const;
   double last_frame_ms() const { return last_frame_ms_; }  // add_frame's time, window included
-  int plate_landmarks() const { return static_cast<int>(plates_.size()); }
+  int plate_landmarks() const { return plates_.size(); }
   int landmarks() const { return static_cast<int>(graph_.planes.size()); }
 
  private:
@@ -90,12 +91,7 @@ class StructureSlam {
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
   void bend_across_plates(ZoneLayers::iterator added);
   bool plate_between(long a, long b) const;
-  struct KnownPlate {
-    double station_m;    // along the walk (odometry), where it was first seen
-    double seen_from_m;  // the camera's station when it was last seen
-    int plane;
-  };
-  std::vector<KnownPlate> plates_;
+  PlateTracks plates_;
   void share_systematic_error(int pose, int plane, double sigma_m);
   struct SharedView {
     int frames = 0, last_frame = -1;
