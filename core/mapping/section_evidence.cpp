@@ -59,22 +59,26 @@ std::set<int> poses_seeing_step(const SectionRun& a, const SectionRun& b, const 
 
 bool measured(const std::vector<double>& v) { return !std::isnan(median_of_measured(v)); }
 
-// A frame that measures the stepping dimension on both sides and sees no step there.
-bool a_frame_sees_it_stay(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e) {
+// Pose groups whose frames each measure the stepping dimension on both sides and see no step
+// there. One view can be wrong where a step hides behind a plate (through the manhole, a wall
+// and the one past its joint, a few millimetres apart, make one plane), so a step is taken
+// back as it is confirmed: by `min_poses` pose groups.
+bool poses_see_it_stay(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e) {
   const int dim = stepping_dimension(a, b);
   const double step = dim == 0 ? b.width_m - a.width_m : b.height_m - a.height_m;
+  std::set<int> poses;
   for (const auto& [frame, s] : frames) {
     const std::vector<double>& before = dim == 0 ? s.w[0] : s.h[0];
     const std::vector<double>& after = dim == 0 ? s.w[1] : s.h[1];
-    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m)) return true;
+    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m)) poses.insert(pose_of(frame, e.pose_groups));
   }
-  return false;
+  return static_cast<int>(poses.size()) >= e.min_poses;
 }
 
 // The stretch a plate hides: one within reach of it, with no frame seeing the size stay.
 bool hidden_by_plate(const SectionRun& a, const SectionRun& b, const JointStretch& s, const FrameSides& frames,
                      const JointEvidence& e) {
-  if (a_frame_sees_it_stay(a, b, frames, e)) return false;
+  if (poses_see_it_stay(a, b, frames, e)) return false;
   return std::any_of(e.plate_stations.begin(), e.plate_stations.end(), [&](int p) {
     return p >= s.last_a - e.plate_reach && p <= s.first_b + e.plate_reach && p >= a.first && p < b.last;
   });
@@ -105,7 +109,7 @@ bool joint_confirmed(const SectionRun& a, const SectionRun& b, const FrameSides&
                      const JointEvidence& e) {
   const std::set<int> seeing = poses_seeing_step(a, b, frames, e);
   if (static_cast<int>(seeing.size()) >= e.min_poses) return true;
-  if (!seeing.empty() && each_side_measured(a, b, frames, e, seeing) && !a_frame_sees_it_stay(a, b, frames, e))
+  if (!seeing.empty() && each_side_measured(a, b, frames, e, seeing) && !poses_see_it_stay(a, b, frames, e))
     return true;
   return hidden_by_plate(a, b, sized, frames, e) && each_side_measured(a, b, frames, e);
 }

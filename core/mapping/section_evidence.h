@@ -6,14 +6,15 @@
 // section is kept only where single frames of at least `min_poses` pose groups each measure
 // the step themselves (their own sizes on the two sides differ, in the direction of the
 // sections' step, by more than half of it), or where one pose group's frames see the step and
-// the frames of `min_poses` pose groups on each side measure their side's size (below) with
-// no frame seeing the size stay across; otherwise the two sections are one.
+// the frames of `min_poses` pose groups on each side measure their side's size (below) and the
+// frames of fewer than `min_poses` pose groups see the size stay across; otherwise the two
+// sections are one.
 //
 // A plate across the girder hides each side of it from the other, so a joint at a plate is
 // never seen whole by one frame. There the evidence is the frames' own sizes on each side: at
 // least `min_poses` pose groups on each side measure their side's size (nearer it than the
-// other side's), and no frame that sees the stepping dimension on both sides (through the
-// plate's manhole) sees it stay. The joint then goes to the middle of the stretch where no
+// other side's), and the frames that see the stepping dimension on both sides (through the
+// plate's manhole) and see it stay belong to fewer than `min_poses` pose groups. The joint then goes to the middle of the stretch where no
 // station tells its side (core/mapping/joint_stretch.h), as it does where views saw both sides
 // but nothing measured the stations between them.
 #include <array>
