@@ -70,12 +70,13 @@ bool poses_see_it_stay(const SectionRun& a, const SectionRun& b, const FrameSide
   for (const auto& [frame, s] : frames) {
     const std::vector<double>& before = dim == 0 ? s.w[0] : s.h[0];
     const std::vector<double>& after = dim == 0 ? s.w[1] : s.h[1];
-    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m)) poses.insert(pose_of(frame, e.pose_groups));
+    if (measured(before) && measured(after) && !steps(before, after, step, e.change_m))
+      poses.insert(pose_of(frame, e.pose_groups));
   }
   return static_cast<int>(poses.size()) >= e.min_poses;
 }
 
-// The stretch a plate hides: one within reach of it, with no frame seeing the size stay.
+// The stretch a plate hides: one within reach of it, unless two pose groups see the size stay.
 bool hidden_by_plate(const SectionRun& a, const SectionRun& b, const JointStretch& s, const FrameSides& frames,
                      const JointEvidence& e) {
   if (poses_see_it_stay(a, b, frames, e)) return false;
