@@ -20,7 +20,8 @@ int PlateTracks::nearest(double station_m, double sigma_m, double camera_station
   double best_gap = options_.gate_m;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     const double gap = std::abs(tracks_[i].station_m - station_m);
-    if (gap <= reach_m(tracks_[i], sigma_m, camera_station_m) && gap < best_gap) best_gap = gap, best = static_cast<int>(i);
+    if (gap <= reach_m(tracks_[i], sigma_m, camera_station_m) && gap < best_gap)
+      best_gap = gap, best = static_cast<int>(i);
   }
   return best;
 }

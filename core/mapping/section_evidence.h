@@ -14,9 +14,10 @@
 // never seen whole by one frame. There the evidence is the frames' own sizes on each side: at
 // least `min_poses` pose groups on each side measure their side's size (nearer it than the
 // other side's), and the frames that see the stepping dimension on both sides (through the
-// plate's manhole) and see it stay belong to fewer than `min_poses` pose groups. The joint then goes to the middle of the stretch where no
-// station tells its side (core/mapping/joint_stretch.h), as it does where views saw both sides
-// but nothing measured the stations between them.
+// plate's manhole) and see it stay belong to fewer than `min_poses` pose groups. The joint
+// then goes to the middle of the stretch where no station tells its side
+// (core/mapping/joint_stretch.h), as it does where views saw both sides but nothing measured
+// the stations between them.
 #include <array>
 #include <vector>
 
