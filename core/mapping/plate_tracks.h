@@ -5,9 +5,10 @@
 // the plate was last seen takes certainty away. A view within four standard deviations of where
 // a plate is expected is that plate.
 //
-// A plate first seen through a manhole from 5 m is known to a centimetre or two. Held at that
-// first view, its near views fell outside the reach and made a second landmark of the same
-// plate, which let the compartment behind it slide along the girder by a few centimetres.
+// The view's own noise counts as well as the drift: a plate first seen through a manhole from
+// 5 m is known to a centimetre or two, and its near views, a few centimetres from that, must
+// still be that plate. A second landmark of it would leave the compartment behind it held
+// along the girder by the odometry alone.
 #include <vector>
 
 namespace tunnelmap {
