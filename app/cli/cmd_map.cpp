@@ -21,6 +21,7 @@
 #include "core/kinematics/frame_pose.h"
 #include "core/kinematics/robot_json.h"
 #include "core/mapping/dataset_mapping.h"
+#include "core/mapping/rescan_stretches.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/report/girder_json.h"
 #include "core/report/pose_refinement_json.h"
@@ -91,6 +92,19 @@ void add_refinement(nlohmann::json& doc, const PoseRefinement& r) {
   }
 }
 
+// The stretches whose size no frame measured; those that hold a joint line by line.
+void print_rescan(const StationMap& m) {
+  const std::vector<RescanStretch> stretches = rescan_stretches(m);
+  if (stretches.empty()) return;
+  double metres[2] = {0.0, 0.0};  // width, height
+  for (const RescanStretch& r : stretches)
+    metres[r.dimension == StationDimension::Width ? 0 : 1] += r.to_m - r.from_m;
+  std::printf("rescan: %zu stretch(es) where no frame measured the width (%.1f m in all) or the height (%.1f m)\n",
+              stretches.size(), metres[0], metres[1]);
+  for (const RescanStretch& r : stretches)
+    if (r.joint_inside) std::printf("rescan %.2f to %.2f m: %s\n", r.from_m, r.to_m, r.reason.c_str());
+}
+
 void print_summary(const StationMap& m, const PoseRefinement& refinement, double detect_ms,
                    double map_ms, int frames) {
   std::printf("map: %zu stations of %.2f m over %.2f m, %zu section(s), %d of %d frames used\n",
@@ -111,6 +125,7 @@ void print_summary(const StationMap& m, const PoseRefinement& refinement, double
     if (p.rescan)
       std::printf("pose %d (frames %d-%d): %s\n", p.group, p.frames.front(), p.frames.back(),
                   p.message.c_str());
+  print_rescan(m);
   if (refinement.ran && refinement.given_poses_kept) {
     std::printf("poses kept as given: the structure agrees with them within its noise (chi-square gain %.1f, "
                 "threshold %.1f)\n", refinement.evidence.chi2_gain, refinement.evidence.threshold);

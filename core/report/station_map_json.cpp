@@ -1,5 +1,6 @@
 #include "core/report/station_map_json.h"
 
+#include "core/mapping/rescan_stretches.h"
 #include "core/report/girder_json.h"
 #include "core/report/json_numbers.h"
 
@@ -59,6 +60,14 @@ nlohmann::json section_json(const Section& s, const StationMapOptions& o, bool f
   return j;
 }
 
+nlohmann::json rescan_json(const RescanStretch& r) {
+  return {{"from_m", round_to(r.from_m, 1e-4)},
+          {"to_m", round_to(r.to_m, 1e-4)},
+          {"unmeasured", station_dimension_name(r.dimension)},
+          {"joint_inside", r.joint_inside},
+          {"reason", r.reason}};
+}
+
 nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& params,
                                     const nlohmann::json& frames, const std::string& input) {
   nlohmann::json doc;
@@ -93,6 +102,10 @@ nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& p
   doc["stations"] = stations;
   doc["sections"] = sections;
   doc["poses"] = poses;
+  // Stretches whose size no frame measured: where the robot should look again.
+  nlohmann::json rescan = nlohmann::json::array();
+  for (const RescanStretch& r : rescan_stretches(m)) rescan.push_back(rescan_json(r));
+  doc["rescan"] = rescan;
   add_girder_json(m.girder, doc);
   doc["frames"] = frames;
   const double map_ms = m.timings_ms.count("map") ? m.timings_ms.at("map") : 0.0;
@@ -102,6 +115,7 @@ nlohmann::json station_map_document(const StationMap& m, const nlohmann::json& p
                     {"sections", m.sections.size()},
                     {"out_of_tolerance", m.out_of_tolerance().size()},
                     {"rescan_poses", rescans},
+                    {"rescan_stretches", doc["rescan"].size()},
                     {"diaphragms", m.girder.diaphragms.size()},
                     {"extent_m", m.stations.empty() ? nlohmann::json(nullptr)
                                                     : nlohmann::json({round_to(m.sections.front().from_m, 1e-4),

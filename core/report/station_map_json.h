@@ -14,6 +14,9 @@ nlohmann::json station_json(const Station& s);
 // {"from_m","to_m","width_m","height_m","frames","joint","width_dev_mm","height_dev_mm"};
 // "joint" (the one at from_m) is null for the first section, `first`.
 nlohmann::json section_json(const Section& s, const StationMapOptions& o, bool first);
+// A stretch to rescan: {"from_m","to_m","unmeasured":"width"|"height","joint_inside","reason"}.
+struct RescanStretch;
+nlohmann::json rescan_json(const RescanStretch& r);
 
 // The whole document: {"tool","version","input","params","station_step_m","design",
 // "tolerance_mm","frame","stations","sections","poses","frames","summary"}. `frames`: the
