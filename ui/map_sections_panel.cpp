@@ -6,6 +6,8 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "core/mapping/rescan_stretches.h"
+
 namespace tunnelmap::ui {
 
 namespace {
@@ -68,7 +70,7 @@ MapSectionsPanel::MapSectionsPanel(QWidget* parent) : QWidget(parent) {
 
 void MapSectionsPanel::clear() {
   tree_->clear();
-  sections_ = out_of_tolerance_ = diaphragms_ = nullptr;
+  sections_ = out_of_tolerance_ = rescan_ = diaphragms_ = nullptr;
   summary_->setText(tr("No map: Processing ▸ Map tunnel on a posed dataset lists its sections here."));
 }
 
@@ -77,6 +79,7 @@ void MapSectionsPanel::set_map(const StationMap& map) {
   if (!map.ok) return;
   add_sections(map);
   add_out_of_tolerance(map);
+  add_rescan(map);
   add_diaphragms(map);
   const bool design = map.options.design_width_m || map.options.design_height_m;
   summary_->setText(design ? tr("%1 section(s), %2 of %3 stations out of tolerance (±%4 mm of the design)")
@@ -120,6 +123,23 @@ void MapSectionsPanel::add_out_of_tolerance(const StationMap& map) {
   }
 }
 
+// A stretch's row names the dimension no frame measured in its column; a joint inside it is
+// flagged, and the row's tooltip says why it is listed. A click shows its middle.
+void MapSectionsPanel::add_rescan(const StationMap& map) {
+  const std::vector<RescanStretch> stretches = rescan_stretches(map);
+  if (stretches.empty()) return;
+  rescan_ = group(tree_, tr("To rescan (%1)").arg(stretches.size()));
+  for (const RescanStretch& r : stretches) {
+    const bool width = r.dimension == StationDimension::Width;
+    QTreeWidgetItem* item =
+        row(rescan_, 0.5 * (r.from_m + r.to_m),
+            {tr("%1 – %2").arg(r.from_m, 0, 'f', 2).arg(r.to_m, 0, 'f', 2), width ? tr("not measured") : QString(),
+             width ? QString() : tr("not measured"), r.joint_inside ? tr("joint inside") : QString(), QString()});
+    for (int c = kWhere; c < kColumns; ++c) item->setToolTip(c, QString::fromStdString(r.reason));
+    if (r.joint_inside) item->setForeground(kDeviation, Qt::darkRed);
+  }
+}
+
 void MapSectionsPanel::add_diaphragms(const StationMap& map) {
   const auto& plates = map.girder.diaphragms;
   if (plates.empty()) return;
@@ -149,6 +169,7 @@ void MapSectionsPanel::select_station(double station_m) {
 }
 
 int MapSectionsPanel::section_rows() const { return sections_ ? sections_->childCount() : 0; }
+int MapSectionsPanel::rescan_rows() const { return rescan_ ? rescan_->childCount() : 0; }
 int MapSectionsPanel::out_of_tolerance_rows() const { return out_of_tolerance_ ? out_of_tolerance_->childCount() : 0; }
 
 }  // namespace tunnelmap::ui

@@ -1,6 +1,7 @@
 #pragma once
 // The mapped tunnel as lists an inspector works down: its sections (extent, size, frames), the
-// stations out of tolerance (with their deviation from the design) and the diaphragm plates.
+// stations out of tolerance (with their deviation from the design), the stretches to rescan
+// (whose width or height no frame measured) and the diaphragm plates.
 // A click on a row asks for that station (the window shows the frame that sees it and cuts the
 // cross-section there, as a click on the profile does); the profile's station selects the row.
 #include <QWidget>
@@ -25,6 +26,7 @@ class MapSectionsPanel : public QWidget {
   QTreeWidget* tree() const { return tree_; }
   int section_rows() const;
   int out_of_tolerance_rows() const;
+  int rescan_rows() const;
 
  signals:
   void stationChosen(double station_m);
@@ -32,12 +34,14 @@ class MapSectionsPanel : public QWidget {
  private:
   void add_sections(const StationMap& map);
   void add_out_of_tolerance(const StationMap& map);
+  void add_rescan(const StationMap& map);
   void add_diaphragms(const StationMap& map);
 
   QLabel* summary_;
   QTreeWidget* tree_;
   QTreeWidgetItem* sections_ = nullptr;
   QTreeWidgetItem* out_of_tolerance_ = nullptr;
+  QTreeWidgetItem* rescan_ = nullptr;
   QTreeWidgetItem* diaphragms_ = nullptr;
 };
 

@@ -26,6 +26,7 @@
 #include "ui/depth_view_widget.h"
 #include "core/tunnel/tunnel_options.h"
 #include "ui/main_window.h"
+#include "core/mapping/rescan_stretches.h"
 #include "ui/map_sections_panel.h"
 #include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
@@ -239,6 +240,43 @@ class ProfilePlotTest : public QObject {
   }
 };
 
+// The sections dock's list of stretches to rescan: the profile map with its roof out of view
+// over 0.8-1.4 m, where a joint was placed between views.
+class MapSectionsPanelTest : public QObject {
+  Q_OBJECT
+
+ private slots:
+  void listsTheStretchesToRescanAndAClickShowsTheirMiddle() {
+    tunnelmap::StationMap m = profile_map();
+    for (int i = 8; i <= 13; ++i) m.stations[i].height_source = tunnelmap::DimensionSource::Context;
+    m.sections[1].joint_seen = false;
+    m.sections[1].joint_uncertainty_m = 0.3;
+    tunnelmap::ui::MapSectionsPanel panel;
+    panel.resize(700, 500);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.set_map(m);
+    // The lone context station at 0.05 m is shorter than a section: not listed.
+    QCOMPARE(panel.rescan_rows(), 1);
+    QTreeWidgetItem* group = panel.tree()->topLevelItem(2);
+    QCOMPARE(group->text(0), QStringLiteral("To rescan (1)"));
+    QTreeWidgetItem* stretch = group->child(0);
+    QCOMPARE(stretch->text(0), QStringLiteral("0.80 – 1.40"));
+    QCOMPARE(stretch->text(1), QString());
+    QCOMPARE(stretch->text(2), QStringLiteral("not measured"));
+    QCOMPARE(stretch->text(3), QStringLiteral("joint inside"));
+    QVERIFY(stretch->toolTip(0).contains("a joint lies somewhere in this stretch"));
+    QSignalSpy chosen(&panel, &tunnelmap::ui::MapSectionsPanel::stationChosen);
+    panel.tree()->scrollToItem(stretch);
+    QTest::qWait(50);
+    QTest::mouseClick(panel.tree()->viewport(), Qt::LeftButton, {},
+                      panel.tree()->visualItemRect(stretch).topLeft() + QPoint(30, 5));
+    QCOMPARE(chosen.count(), 1);
+    QVERIFY(std::abs(chosen.at(0).at(0).toDouble() - 1.1) < 1e-9);
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel.grab().save(QString(dir) + "/rescan_list.png");
+  }
+};
+
 class View3DMeasureTest : public QObject {
   Q_OBJECT
 
@@ -426,6 +464,8 @@ class MapReviewTest : public QObject {
     // profile's station selects the row it lies in.
     auto* sections = w.map_sections();
     QCOMPARE(sections->section_rows(), 2);
+    // The stretches to rescan are those the command line lists.
+    QCOMPARE(sections->rescan_rows(), static_cast<int>(tunnelmap::rescan_stretches(m).size()));
     QTreeWidgetItem* second = sections->tree()->topLevelItem(0)->child(1);
     sections->tree()->scrollToItem(second);
     QTest::qWait(100);  // the dock shown after the map is laid out
@@ -609,11 +649,13 @@ int main(int argc, char** argv) {
   View3DMeasureTest measure;
   DepthViewMeasureTest depth;
   MapReviewTest review;
+  MapSectionsPanelTest sections_panel;
   int failures = QTest::qExec(&cross_section, argc, argv);
   failures += QTest::qExec(&profile, argc, argv);
   failures += QTest::qExec(&measure, argc, argv);
   failures += QTest::qExec(&depth, argc, argv);
   failures += QTest::qExec(&review, argc, argv);
+  failures += QTest::qExec(&sections_panel, argc, argv);
   return failures;
 }
 

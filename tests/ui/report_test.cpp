@@ -183,6 +183,16 @@ TEST(InspectionReport, HoldsSectionsOutOfToleranceStationsAndRescanPose) {
   EXPECT_NE(text.find("21-27"), std::string::npos);
   EXPECT_NE(text.find("move and rescan: too_few_planes"), std::string::npos);
   EXPECT_EQ(text.find("14-20"), std::string::npos);
+  // The roof out of view at 4.05-4.45 m is a stretch to rescan; the last two stations' roof
+  // from the design (0.2 m) is shorter than a section and is not.
+  const std::size_t stretches = text.find("Stretches to rescan");
+  ASSERT_NE(stretches, std::string::npos);
+  std::size_t at = stretches;
+  for (const char* cell : {"4.00", "4.50", "0.50", "height", "no frame measured the height here"}) {
+    at = text.find(cell, at);
+    ASSERT_NE(at, std::string::npos) << cell;
+  }
+  EXPECT_EQ(text.find("23.80", stretches), std::string::npos);
   // Page numbers on every page.
   const int pages = pdf_pages(pdf);
   EXPECT_GE(pages, 2);
@@ -212,11 +222,13 @@ TEST(InspectionReport, SaysNoneWhenNothingIsOutOfToleranceOrToRescanAndWhyThereI
   StationMap map = test::make_report_station_map();
   for (Station& s : map.stations) s.out_of_tolerance = false;
   for (PoseGroupStatus& p : map.poses) p.rescan = false;
+  for (Station& s : map.stations) s.width_source = s.height_source = DimensionSource::Measured;
   const std::string pdf = dir + "/report.pdf";
   write_inspection_report(pdf, report_input(map, ""));
   const std::string text = pdf_text(pdf);
   EXPECT_NE(text.find("none: every station is within"), std::string::npos);
   EXPECT_NE(text.find("none: every pose found the tunnel"), std::string::npos);
+  EXPECT_NE(text.find("none: frames measured the width and height all along"), std::string::npos);
   EXPECT_NE(text.find("tunnelmap-render was not found next to tunnelmap-cli"), std::string::npos);
 }
 

@@ -52,6 +52,7 @@ void build(report::Document& doc, const InspectionReportInput& in) {
   add_diaphragms_table(doc, m);
   add_out_of_tolerance_table(doc, m);
   add_rescan_table(doc, m);
+  add_rescan_stretches_table(doc, m);
   add_map_image(doc, in.map_image_png, in.map_image_note);
 }
 

@@ -1,5 +1,6 @@
 #include "ui/report/report_lists.h"
 
+#include "core/mapping/rescan_stretches.h"
 #include "ui/report/report_format.h"
 #include "ui/report/report_table.h"
 
@@ -110,6 +111,30 @@ void add_rescan_table(Document& doc, const StationMap& m) {
                                     num(QStringLiteral("Detected"), 0.9),
                                     {QStringLiteral("Message"), 4.0, Qt::AlignLeft, true}};
   add_table(doc, cols, rows);
+}
+
+void add_rescan_stretches_table(Document& doc, const StationMap& m) {
+  doc.add_heading(QStringLiteral("Stretches to rescan"));
+  std::vector<Row> rows;
+  for (const RescanStretch& s : rescan_stretches(m)) {
+    Row r;
+    r.cells << fixed(s.from_m, 2) << fixed(s.to_m, 2) << fixed(s.to_m - s.from_m, 2)
+            << QString::fromLatin1(station_dimension_name(s.dimension)) << QString::fromStdString(s.reason);
+    if (s.joint_inside) r.colour = colours::kAlert;
+    rows.push_back(r);
+  }
+  if (rows.empty()) {
+    add_none(doc, QStringLiteral("none: frames measured the width and height all along"));
+    return;
+  }
+  const std::vector<Column> cols = {num(QStringLiteral("From (m)")), num(QStringLiteral("To (m)")),
+                                    num(QStringLiteral("Length (m)")),
+                                    {QStringLiteral("Unmeasured"), 1.1, Qt::AlignHCenter},
+                                    {QStringLiteral("Why"), 4.5, Qt::AlignLeft, true}};
+  add_table(doc, cols, rows);
+  doc.add_paragraph(QStringLiteral("Stations whose size no frame measured, filled from their neighbours or the "
+                                   "design; red: a joint lies somewhere in the stretch."),
+                    doc.font(7.5), colours::kMuted);
 }
 
 }  // namespace tunnelmap::report
