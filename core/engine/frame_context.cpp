@@ -42,7 +42,7 @@ Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isome
     group_first_ = pose;
   }
   FrameWalls walls;
-  if (result.map.detected) extract_frame_walls(result, walls);
+  extract_frame_walls(result, walls);  // a frame with no cross-section may still see a plate
   return slam_->add_frame(result.map, walls, pose, group_);
 }
 

@@ -116,19 +116,21 @@ void extract_frame_walls(const FrameResult& r, FrameWalls& out, const FrameWalls
   out.rims.clear();
   const TunnelMap& m = r.map;
   const PlaneSegments& ps = r.planes;
-  if (!m.detected || ps.labels.empty() || r.cloud.points.size() != ps.labels.size()) return;
+  if (ps.labels.empty() || r.cloud.points.size() != ps.labels.size()) return;
+  const bool plates_only = !m.detected;
   // Plane id -> sample kind and inset.
   struct Kind {
     std::uint8_t wall;
     float inset;
   };
   std::unordered_map<int, Kind> kind;
-  const double cos_transverse = std::cos(20.0 * M_PI / 180.0);
+  const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
   for (std::size_t i = 0; i < ps.planes.size() && i < m.plane_classes.size(); ++i) {
     const PlaneSegment& p = ps.planes[i];
     if (p.edge_on) continue;
     const WallClass c = m.plane_classes[i];
     if (c != WallClass::Unassigned) {
+      if (plates_only) continue;
       const Wall& w = m.wall(c);
       if (!w.found || w.source != DimensionSource::Measured) continue;
       kind[p.id] = {static_cast<std::uint8_t>(c), 0.0f};
@@ -163,6 +165,7 @@ void extract_frame_walls(const FrameResult& r, FrameWalls& out, const FrameWalls
         out.samples.push_back(s);
       }
     }
+  if (plates_only) return;
   local_insets(m, o, out.samples);
   std::vector<int> plates;
   for (const auto& [id, k] : kind)

@@ -14,6 +14,8 @@ namespace tunnelmap {
 // Walls 0-3 are WallClass Left..Bottom; kTransverseSample marks a plane across the tunnel axis
 // (a manhole plate, the step between two sections).
 constexpr std::uint8_t kTransverseSample = 4;
+// A plane is across the axis when its normal lies within this angle of it.
+constexpr double kTransverseMaxAngleDeg = 20.0;
 
 struct WallSample {
   Eigen::Vector3f point = Eigen::Vector3f::Zero();  // mean of the block's pixels, camera frame
@@ -71,7 +73,11 @@ struct FrameWallsOptions {
 };
 
 // The samples of `r` (its map must come from r.planes). Planes of walls the frame measured,
-// edge-on planes excepted, and planes across the axis of at least min_transverse_points.
+// edge-on planes excepted, and planes across the axis of at least min_transverse_points. A
+// frame that found no cross-section gives its planes across its map's axis (the camera's
+// forward direction) alone: too near a plate to see the walls beside it, it still sees the
+// plate, which tells where it stands along the girder (whoever uses them checks them against
+// the girder's axis).
 void extract_frame_walls(const FrameResult& r, FrameWalls& out,
                          const FrameWallsOptions& options = FrameWallsOptions());
 

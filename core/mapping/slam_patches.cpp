@@ -77,6 +77,7 @@ bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
   out.spread.setZero();
   for (int k = 1; k < 3; ++k)
     out.spread.col(k - 1) = eig.eigenvectors().col(k) * std::sqrt(std::max(0.0, eig.eigenvalues()[k]));
+  out.normal = eig.eigenvectors().col(0);  // the fitted plane's (either way); callers orient it
   // Structured light's depth error grows with z^2, and part of it does not average out over a
   // patch: the floor grows alike, and so does the depth step.
   const double z = out.centroid.norm();
@@ -168,7 +169,8 @@ std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& wa
 }  // namespace
 
 std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o, bool axis_from_frame) {
+  const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
   const std::map<BandKey, Moments> bands = wall_bands(map, walls, camera_station_m, axis_cam, o);
   std::map<int, Moments> plates;  // plane id
   for (const WallSample& s : walls.samples)
@@ -194,6 +196,7 @@ std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& wa
     FramePatch patch;
     if (!reduce(m, o, patch) || patch.centroid.z() > o.max_plate_depth_m) continue;
     if (m.max_depth_m + kRangeMarginSigmas * patch.pixel_sigma_m > o.cloud_max_range_m) continue;
+    if (!axis_from_frame && std::abs(patch.normal.dot(axis_cam)) < cos_transverse) continue;
     patch.plate = true;
     patch.wall = kTransverseSample;
     patch.normal = axis_cam;

@@ -275,16 +275,19 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   const int pose = static_cast<int>(groups_.size()) - 1;
   const Eigen::Isometry3d frame_to_world = graph_.poses.back() * offset;
   const Eigen::Isometry3d frame_odometry = g.odometry * offset;
-  // The frame's view of the axis: its own detection, oriented as the walk goes.
-  Eigen::Vector3d axis_world = oriented(frame_odometry.linear() * map.axis_dir, g.axis);
-  if (!g.has_axis) {
+  // The frame's view of the axis: its own detection, oriented as the walk goes; a frame that
+  // found no cross-section takes its group's (the walk's so far).
+  const bool own_axis = map.detected;
+  const Eigen::Vector3d axis_world = own_axis ? oriented(frame_odometry.linear() * map.axis_dir, g.axis) : g.axis;
+  walk_has_axis_ = walk_has_axis_ || own_axis;
+  if (own_axis && !g.has_axis) {
     g.axis = axis_world;
     g.up = frame_odometry.linear() * map.up;
     g.has_axis = true;
   }
   const Eigen::Vector3d axis_cam = frame_odometry.linear().transpose() * axis_world;
   const double camera_station = g.station_m + g.axis.dot(frame_odometry.translation() - g.odometry.translation());
-  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_);
+  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_, own_axis);
   std::vector<int> planes(patches.size(), -1);
   for (int pair = 0; pair < 4; pair += 2) {  // left and right, top and bottom
     std::vector<const FramePatch*> on_wall;
@@ -331,7 +334,9 @@ Eigen::Isometry3d StructureSlam::add_frame(const TunnelMap& map, const FrameWall
   const Eigen::Isometry3d offset = g.odometry.inverse() * pose;
   g.frames.push_back(frames_++);
   g.offsets.push_back(offset);
-  if (map.detected) {
+  // A frame with no cross-section of its own may still see a plate (core/mapping/frame_walls.h),
+  // told from a wall by the girder's axis once a detected frame has given it.
+  if (map.detected || (walk_has_axis_ && !walls.samples.empty())) {
     add_patches(map, walls, offset);
     solve_window();
   }

@@ -78,6 +78,7 @@ class StructureSlam {
 
   SlamOptions options_;
   std::vector<Group> groups_;
+  bool walk_has_axis_ = false;  // a detected frame has given the girder's axis
   PoseGraph graph_;  // poses = groups' current estimates (their first frame's camera)
   std::map<std::pair<int, long>, std::vector<int>> wall_landmarks_;  // (wall, band) -> layers
   std::vector<FramePatch::Zone> layer_zone_;  // per plane: the wall zone its views took it for

@@ -3,14 +3,8 @@
 // takes an opening's rim only from views near enough to place it.
 #include <gtest/gtest.h>
 
-#include <string>
-
-#include "core/evaluation/girder_family.h"
 #include "core/mapping/frame_walls.h"
-#include "core/params/parameters.h"
-#include "core/pipeline/pipeline.h"
-#include "core/sim/tunnel_simulator.h"
-#include "core/util/build_paths.h"
+#include "tests/support/family_girder.h"
 
 namespace tunnelmap {
 namespace {
@@ -18,15 +12,11 @@ namespace {
 // Girder 5 of the evaluation's family of seed 1: 30.5 m, diaphragms every 3.79 m with
 // elliptic manholes, walked through them in stops of about 0.77 m.
 TEST(PlateRims, FarPlatesLocaliseButTheirRimsAreLeftToNearerViews) {
-  Parameters params;
-  params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/field.json");
-  const TunnelSimulator sim(draw_girders(30, 1)[5].config);
-  const Pipeline pipeline(params);
+  const testing::FamilyGirder girder(1, 5);
   const FrameWallsOptions options;
   long far_plate_points = 0, rim_points = 0;
   for (int i = 0; i < 40; ++i) {
-    FrameResult r;
-    pipeline.run(sim.render(i).frame, r);
+    const FrameResult r = girder.detect(i);
     if (!r.map.detected) continue;
     FrameWalls walls;
     extract_frame_walls(r, walls, options);

@@ -162,6 +162,40 @@ TEST(PoseRefinement, RecoversAGroupsPoseErrorFromFourWallsAndAPlate) {
   }
 }
 
+TEST(PoseRefinement, AFrameTooNearAPlateToSeeACrossSectionStillPlacesItselfByThePlate) {
+  // Four stops see the walls and a plate at 3 m; the fifth, 0.9 m before the plate, sees the
+  // plate alone and finds no cross-section (the walls beside it too short), and its odometry
+  // puts it 30 mm short along the girder. The plate, which every stop measured, says where it is.
+  const bool all[4] = {true, true, true, true}, none[4] = {false, false, false, false};
+  std::vector<TunnelMap> maps;
+  std::vector<FrameWalls> walls;
+  std::vector<Eigen::Isometry3d> given, truth;
+  std::vector<int> groups;
+  for (int g = 0; g < 5; ++g)
+    for (int k = 0; k < 2; ++k) {
+      const double x = g < 4 ? 0.5 * g : 2.1;
+      const Eigen::Isometry3d T = camera_at(x + 0.005 * k, 0.01, 0.6);
+      SyntheticFrame f = g < 4 ? observe(T, x + 0.5, 2.9, all, 3.0) : observe(T, 0.0, 0.0, none, 3.0);
+      if (g == 4) {
+        f.map.detected = false;
+        f.map.status = TunnelStatus::MissingWall;
+      }
+      maps.push_back(f.map);
+      walls.push_back(f.walls);
+      truth.push_back(T);
+      given.push_back(g == 4 ? perturbation(0, 0, 0, {-0.030, 0.0, 0.0}) * T : T);
+      groups.push_back(g);
+    }
+  const PoseRefinement r = refine(maps, walls, given, groups);
+  ASSERT_TRUE(r.ran);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_LT(std::abs(r.poses[i].translation().x() - truth[i].translation().x()), 0.003);
+  }
+  ASSERT_EQ(r.groups.size(), 5u);
+  EXPECT_NEAR(r.groups[4].translation_mm, 30.0, 3.0);
+}
+
 // Side walls of two layers: edge bands (the outer surface) and a middle plate 8 mm proud of
 // them, as a girder's walls are built. `edges`: whether the frame sees the edge bands too.
 SyntheticFrame observe_layered(const Eigen::Isometry3d& T, double x0, double x1, bool edges) {

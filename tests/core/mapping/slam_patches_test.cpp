@@ -1,6 +1,6 @@
 // What one frame contributes to the pose graph: a plate's weight against the depth's
-// quantisation, with and without the noise that dithers it; a wall's zones, apart, whatever
-// planes the segmentation grew over them.
+// quantisation, with and without the noise that dithers it; a frame without a cross-section's
+// plates; a wall's zones, apart, whatever planes the segmentation grew over them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,6 +42,19 @@ FramePatch plate_patch(const FrameWalls& walls) {
       frame_patches(TunnelMap(), walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions());
   EXPECT_EQ(patches.size(), 1u);
   return patches.empty() ? FramePatch() : patches.front();
+}
+
+TEST(SlamPatches, AFrameWithoutACrossSectionKeepsOnlyPlatesAcrossTheGirdersAxis) {
+  // A frame that found no cross-section chose its plates by the camera's forward direction; the
+  // girder's axis (its group's) decides. A plane 40 degrees off the axis is no plate across it.
+  std::mt19937 rng(5);
+  const FrameWalls walls = plate_at(1.2, 0.0, rng);  // facing the camera: normal along +Z
+  const Eigen::Vector3d tilted_axis(std::sin(40.0 * M_PI / 180.0), 0.0, std::cos(40.0 * M_PI / 180.0));
+  const Eigen::Vector3d near_axis(std::sin(10.0 * M_PI / 180.0), 0.0, std::cos(10.0 * M_PI / 180.0));
+  EXPECT_TRUE(frame_patches(TunnelMap(), walls, 0.0, tilted_axis, SlamOptions(), false).empty());
+  EXPECT_EQ(frame_patches(TunnelMap(), walls, 0.0, near_axis, SlamOptions(), false).size(), 1u);
+  // The frame's own detection chose them by its own axis: kept as it gives them.
+  EXPECT_EQ(frame_patches(TunnelMap(), walls, 0.0, tilted_axis, SlamOptions(), true).size(), 1u);
 }
 
 TEST(SlamPatches, APlateOnOneDepthStepKeepsThatStepsError) {

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "core/evaluation/girder_family.h"
+#include "tests/support/family_girder.h"
 #include "core/pipeline/pipeline.h"
 #include "core/planes/cell_fits.h"
 #include "core/planes/cell_moments_avx2.h"
@@ -428,15 +428,11 @@ TEST(CellGrowing, AManholeRimMakesNoPlaneOfItsOwn) {
 // plate's cells to 20 mm RMS: its blocks measured 22-27 mm, and the plate made no plane (2 %
 // of its pixels went to the walls' planes). Now one plane takes most of it, along its normal.
 TEST(CellGrowing, APlateAcrossTheViewIsFoundAtTheRangeWhereItsNoiseExceedsTheWalls) {
-  Parameters params;
-  params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/field.json");
-  const SimConfig config = draw_girders(30, 1)[5].config;
-  const TunnelSimulator sim(config);
-  const Pipeline pipeline(params);
+  const tunnelmap::testing::FamilyGirder girder(1, 5);
+  const TunnelSimulator& sim = girder.sim();
   for (const int i : {20, 21}) {
-    const SimFrame frame = sim.render(i);
-    FrameResult r;
-    pipeline.run(frame.frame, r);
+    SimFrame frame;
+    const FrameResult r = girder.detect(i, &frame);
     std::map<int, long> on_plate;  // plane id -> its pixels on a diaphragm
     long valid = 0;
     for (std::size_t k = 0; k < r.planes.labels.size(); ++k) {
