@@ -74,10 +74,10 @@ struct FrameWallsOptions {
 
 // The samples of `r` (its map must come from r.planes). Planes of walls the frame measured,
 // edge-on planes excepted, and planes across the axis of at least min_transverse_points. A
-// frame that found no cross-section gives its planes across its map's axis (the camera's
-// forward direction) alone: too near a plate to see the walls beside it, it still sees the
-// plate, which tells where it stands along the girder (whoever uses them checks them against
-// the girder's axis).
+// frame that found no cross-section gives its planes across its map's rough axis (the camera's
+// forward direction levelled by the up it was given, or the walls' fitted axis) alone: too near
+// a plate to see the walls beside it, it still sees the plate, which tells where it stands
+// along the girder (whoever uses them checks them against the girder's axis).
 void extract_frame_walls(const FrameResult& r, FrameWalls& out,
                          const FrameWallsOptions& options = FrameWallsOptions());
 

@@ -169,7 +169,7 @@ std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& wa
 }  // namespace
 
 std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o, bool axis_from_frame) {
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
   const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
   const std::map<BandKey, Moments> bands = wall_bands(map, walls, camera_station_m, axis_cam, o);
   std::map<int, Moments> plates;  // plane id
@@ -196,7 +196,7 @@ std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& wa
     FramePatch patch;
     if (!reduce(m, o, patch) || patch.centroid.z() > o.max_plate_depth_m) continue;
     if (m.max_depth_m + kRangeMarginSigmas * patch.pixel_sigma_m > o.cloud_max_range_m) continue;
-    if (!axis_from_frame && std::abs(patch.normal.dot(axis_cam)) < cos_transverse) continue;
+    if (!map.detected && std::abs(patch.normal.dot(axis_cam)) < cos_transverse) continue;
     patch.plate = true;
     patch.wall = kTransverseSample;
     patch.normal = axis_cam;

@@ -30,12 +30,11 @@ struct FramePatch {
 
 // `camera_station_m`: the camera's position along the girder; `axis_cam`: the girder's axis in
 // the camera frame, pointing forward. A wall's zones (edge band, middle plate) are patches of
-// their own: each is a layer of the wall's landmark (StructureSlam). `axis_from_frame`: the
-// frame's own detection gave `axis_cam` and chose its plates by it; otherwise (a frame that
-// found no cross-section, its plates chosen by the camera's forward direction) a plate is kept
-// only when its own normal lies within kTransverseMaxAngleDeg of `axis_cam`.
+// their own: each is a layer of the wall's landmark (StructureSlam). A frame that found no
+// cross-section (`map.detected` false) chose its plates by its map's rough axis, not the
+// girder's: a plate of it is kept only when its own normal lies within kTransverseMaxAngleDeg
+// of `axis_cam`.
 std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& options,
-                                      bool axis_from_frame = true);
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& options);
 
 }  // namespace tunnelmap

@@ -357,7 +357,7 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
 void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isometry3d& T) {
   const auto t0 = std::chrono::steady_clock::now();
   FrameWalls walls;
-  extract_frame_walls(r, walls);
+  if (r.map.detected) extract_frame_walls(r, walls);  // the map takes detected frames only
   const double extract_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   add_frame(index, r.map, walls, T);

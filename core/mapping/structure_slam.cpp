@@ -287,7 +287,7 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   }
   const Eigen::Vector3d axis_cam = frame_odometry.linear().transpose() * axis_world;
   const double camera_station = g.station_m + g.axis.dot(frame_odometry.translation() - g.odometry.translation());
-  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_, own_axis);
+  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_);
   std::vector<int> planes(patches.size(), -1);
   for (int pair = 0; pair < 4; pair += 2) {  // left and right, top and bottom
     std::vector<const FramePatch*> on_wall;

@@ -1,6 +1,5 @@
 #include "core/report/station_map_json.h"
 
-#include "core/mapping/rescan_stretches.h"
 #include "core/report/girder_json.h"
 #include "core/report/json_numbers.h"
 

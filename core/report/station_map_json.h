@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/mapping/rescan_stretches.h"
 #include "core/mapping/station_map.h"
 
 namespace tunnelmap {
@@ -15,11 +16,11 @@ nlohmann::json station_json(const Station& s);
 // "joint" (the one at from_m) is null for the first section, `first`.
 nlohmann::json section_json(const Section& s, const StationMapOptions& o, bool first);
 // A stretch to rescan: {"from_m","to_m","unmeasured":"width"|"height","joint_inside","reason"}.
-struct RescanStretch;
 nlohmann::json rescan_json(const RescanStretch& r);
 
 // The whole document: {"tool","version","input","params","station_step_m","design",
-// "tolerance_mm","frame","stations","sections","poses","frames","summary"}. `frames`: the
+// "tolerance_mm","frame","stations","sections","poses","rescan",(the girder's structure),"frames",
+// "summary"}. `frames`: the
 // per-frame detection objects of `detect --json` (may be empty).
 nlohmann::json station_map_document(const StationMap& map, const nlohmann::json& params,
                                     const nlohmann::json& frames, const std::string& input);

@@ -124,7 +124,7 @@ void add_rescan_stretches_table(Document& doc, const StationMap& m) {
     rows.push_back(r);
   }
   if (rows.empty()) {
-    add_none(doc, QStringLiteral("none: frames measured the width and height all along"));
+    add_none(doc, QStringLiteral("none: no unmeasured stretch is long enough to hide a section or holds a joint"));
     return;
   }
   const std::vector<Column> cols = {num(QStringLiteral("From (m)")), num(QStringLiteral("To (m)")),
@@ -132,8 +132,8 @@ void add_rescan_stretches_table(Document& doc, const StationMap& m) {
                                     {QStringLiteral("Unmeasured"), 1.1, Qt::AlignHCenter},
                                     {QStringLiteral("Why"), 4.5, Qt::AlignLeft, true}};
   add_table(doc, cols, rows);
-  doc.add_paragraph(QStringLiteral("Stations whose size no frame measured, filled from their neighbours or the "
-                                   "design; red: a joint lies somewhere in the stretch."),
+  doc.add_paragraph(QStringLiteral("Stations whose size no frame measured: filled from their neighbours or the "
+                                   "design, or unknown; red: a joint lies somewhere in the stretch."),
                     doc.font(7.5), colours::kMuted);
 }
 

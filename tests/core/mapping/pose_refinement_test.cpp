@@ -196,6 +196,36 @@ TEST(PoseRefinement, AFrameTooNearAPlateToSeeACrossSectionStillPlacesItselfByThe
   EXPECT_NEAR(r.groups[4].translation_mm, 30.0, 3.0);
 }
 
+TEST(PoseRefinement, AFrameWithoutACrossSectionAddsAPlateOnlyOnceTheGirdersAxisIsKnown) {
+  // Before any frame found a cross-section, the girder's axis is unknown and a plane facing the
+  // camera may as well be a wall seen head-on: such a frame adds nothing. Later, frame by frame,
+  // one 30 mm off along the girder is placed by the plate it shares with the stops before.
+  const bool all[4] = {true, true, true, true}, none[4] = {false, false, false, false};
+  const auto undetected = [&](const Eigen::Isometry3d& T) {
+    SyntheticFrame f = observe(T, 0.0, 0.0, none, 3.0);
+    f.map.detected = false;
+    f.map.status = TunnelStatus::MissingWall;
+    return f;
+  };
+  StructureSlam slam;
+  const Eigen::Isometry3d start = camera_at(0.0, 0.01, 0.6);
+  const SyntheticFrame first = undetected(start);
+  slam.add_frame(first.map, first.walls, start, 0);
+  EXPECT_EQ(slam.landmarks(), 0);
+  for (int g = 1; g < 4; ++g) {
+    const Eigen::Isometry3d T = camera_at(0.5 * g, 0.01, 0.6);
+    const SyntheticFrame f = observe(T, 0.5 * g + 0.5, 2.9, all, 3.0);
+    slam.add_frame(f.map, f.walls, T, g);
+  }
+  ASSERT_EQ(slam.plate_landmarks(), 1);
+  const Eigen::Isometry3d truth = camera_at(2.1, 0.01, 0.6);
+  const SyntheticFrame near = undetected(truth);
+  const Eigen::Isometry3d placed =
+      slam.add_frame(near.map, near.walls, perturbation(0, 0, 0, {-0.030, 0.0, 0.0}) * truth, 4);
+  EXPECT_EQ(slam.plate_landmarks(), 1);
+  EXPECT_LT(std::abs(placed.translation().x() - truth.translation().x()), 0.003);
+}
+
 // Side walls of two layers: edge bands (the outer surface) and a middle plate 8 mm proud of
 // them, as a girder's walls are built. `edges`: whether the frame sees the edge bands too.
 SyntheticFrame observe_layered(const Eigen::Isometry3d& T, double x0, double x1, bool edges) {

@@ -51,10 +51,14 @@ TEST(SlamPatches, AFrameWithoutACrossSectionKeepsOnlyPlatesAcrossTheGirdersAxis)
   const FrameWalls walls = plate_at(1.2, 0.0, rng);  // facing the camera: normal along +Z
   const Eigen::Vector3d tilted_axis(std::sin(40.0 * M_PI / 180.0), 0.0, std::cos(40.0 * M_PI / 180.0));
   const Eigen::Vector3d near_axis(std::sin(10.0 * M_PI / 180.0), 0.0, std::cos(10.0 * M_PI / 180.0));
-  EXPECT_TRUE(frame_patches(TunnelMap(), walls, 0.0, tilted_axis, SlamOptions(), false).empty());
-  EXPECT_EQ(frame_patches(TunnelMap(), walls, 0.0, near_axis, SlamOptions(), false).size(), 1u);
-  // The frame's own detection chose them by its own axis: kept as it gives them.
-  EXPECT_EQ(frame_patches(TunnelMap(), walls, 0.0, tilted_axis, SlamOptions(), true).size(), 1u);
+  const TunnelMap undetected;
+  ASSERT_FALSE(undetected.detected);
+  EXPECT_TRUE(frame_patches(undetected, walls, 0.0, tilted_axis, SlamOptions()).empty());
+  EXPECT_EQ(frame_patches(undetected, walls, 0.0, near_axis, SlamOptions()).size(), 1u);
+  // A frame's own detection chose them by its own axis: kept as it gives them.
+  TunnelMap detected;
+  detected.detected = true;
+  EXPECT_EQ(frame_patches(detected, walls, 0.0, tilted_axis, SlamOptions()).size(), 1u);
 }
 
 TEST(SlamPatches, APlateOnOneDepthStepKeepsThatStepsError) {
