@@ -4,7 +4,7 @@
 // when a whole section could hide in it (at least the shortest section long) or when a joint
 // the map placed between views lies in it: its position is then only known to the stretch.
 // Past a plate a forward-looking camera sees the roof and floor beside it only from 1-2 m on,
-// so such stretches are where the robot must look again (see docs/tunnel-map.md, "Rescan").
+// so such stretches are where the robot must look again (docs/tunnel-map.md, "What to rescan").
 #include <string>
 #include <vector>
 
