@@ -45,6 +45,13 @@ class TruthLine {
   std::vector<Eigen::Vector3d> x_;
 };
 
+// A point the map placed, in its truth station: moved by the alignment first.
+struct MapInTruth {
+  const TruthLine& line;
+  Eigen::Isometry3d to_truth;
+  double station_of(const Eigen::Vector3d& mapped) const { return line.station_of(to_truth * mapped); }
+};
+
 struct TruthPlate {
   double station;
   bool manhole;
@@ -59,7 +66,7 @@ bool near_any(double s, const std::vector<double>& marks, double d) {
   return std::any_of(marks.begin(), marks.end(), [&](double m) { return std::abs(s - m) < d; });
 }
 
-void score_stations(const StationMap& m, const TruthLine& line, const std::vector<TruthRoom>& rooms,
+void score_stations(const StationMap& m, const MapInTruth& line, const std::vector<TruthRoom>& rooms,
                     const std::vector<double>& changes, const GirderScoringOptions& o, GirderScore& g) {
   for (std::size_t k = 0; k < m.stations.size() && k < m.girder.centreline.size(); ++k) {
     const Station& st = m.stations[k];
@@ -73,7 +80,7 @@ void score_stations(const StationMap& m, const TruthLine& line, const std::vecto
 }
 
 // Sections: the truth's cross-section changes against the map's section boundaries.
-void score_sections(const StationMap& m, const TruthLine& line, const std::vector<TruthRoom>& rooms,
+void score_sections(const StationMap& m, const MapInTruth& line, const std::vector<TruthRoom>& rooms,
                     const GirderScoringOptions& o, GirderScore& g) {
   std::vector<double> truth_joints;
   for (std::size_t k = 1; k < rooms.size(); ++k)
@@ -103,7 +110,7 @@ void score_sections(const StationMap& m, const TruthLine& line, const std::vecto
 // Plates are seen from afar, so a map may show one beyond its stations' extent (the end wall
 // ahead of the last stop): a plate outside the extent counts when the map found it, and is no
 // miss when it did not.
-void score_plates(const StationMap& m, const TruthLine& line, const std::vector<TruthPlate>& plates,
+void score_plates(const StationMap& m, const MapInTruth& line, const std::vector<TruthPlate>& plates,
                   double seen_from, double seen_to, const GirderScoringOptions& o, GirderScore& g) {
   std::vector<bool> used(plates.size(), false);
   for (const Diaphragm& d : m.girder.diaphragms) {
@@ -149,45 +156,50 @@ void split_error(const Eigen::Vector3d& error, const Eigen::Vector3d& truth, con
   g.pose_error_vertical_mm.push_back(error.dot(vertical) * 1000);
 }
 
-void score_poses(const DatasetMapping& dm, const nlohmann::json& frames, const TruthLine& line, GirderScore& g) {
-  if (dm.mapped.refinement.ran) g.poses_kept = dm.mapped.refinement.given_poses_kept;
-  for (const PoseCorrection& c : dm.mapped.refinement.groups) {
-    g.correction_mm.push_back(c.translation_mm);
-    g.correction_deg.push_back(c.rotation_deg);
-  }
-  const std::size_t n = std::min<std::size_t>(dm.mapped.poses.size(), frames.size());
-  if (n < 3) return;
-  for (std::size_t i = 0; i < n; ++i)
-    if (!frames[i].contains("pose_true")) return;
-  Eigen::Matrix3Xd est(3, n), truth(3, n);
-  std::vector<Eigen::Matrix3d> rot_true(n);
+// Every frame's true camera-to-world pose ("pose_true"), or none when a frame lacks one.
+std::vector<Eigen::Isometry3d> truth_poses(const nlohmann::json& frames, std::size_t n) {
+  if (n < 3) return {};
+  std::vector<Eigen::Isometry3d> poses(n, Eigen::Isometry3d::Identity());
   for (std::size_t i = 0; i < n; ++i) {
+    if (!frames[i].contains("pose_true")) return {};
     const nlohmann::json& p = frames[i]["pose_true"];  // row-major 4 x 4
-    Eigen::Matrix3d R;
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) R(r, c) = p[4 * r + c].get<double>();
-    rot_true[i] = R;
-    truth.col(i) = Eigen::Vector3d(p[3].get<double>(), p[7].get<double>(), p[11].get<double>());
-    est.col(i) = dm.mapped.poses[i].translation();
+      for (int c = 0; c < 4; ++c) poses[i].matrix()(r, c) = p[4 * r + c].get<double>();
   }
-  // One rigid alignment of the whole sequence: its rotation from the orientations (a walk's
-  // camera centres lie almost on a line, which leaves the roll about it free), then the
-  // translation that matches the centroids.
-  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-  for (std::size_t i = 0; i < n; ++i) M += rot_true[i] * dm.mapped.poses[i].linear().transpose();
+  return poses;
+}
+
+// One rigid alignment of the whole sequence, map to truth: the one that fits the camera
+// centres best (the trajectory error's usual alignment, Horn's). The centres of a straight
+// walk lie almost on a line, which leaves the roll about it free, so each frame's orientation
+// also counts, as much as a point a metre off its centre: on a walk of tens of metres the
+// positions decide the heading and the pitch, and a camera mounted slightly askew does not
+// tilt the walk.
+Eigen::Isometry3d align_to_truth(const std::vector<Eigen::Isometry3d>& mapped, const std::vector<Eigen::Isometry3d>& truth) {
+  const std::size_t n = truth.size();
+  Eigen::Matrix3Xd est(3, n), tru(3, n);
+  for (std::size_t i = 0; i < n; ++i) est.col(i) = mapped[i].translation(), tru.col(i) = truth[i].translation();
+  const Eigen::Vector3d truth_mean = tru.rowwise().mean(), est_mean = est.rowwise().mean();
+  const double orientation_weight_m2 = 1.0;
+  Eigen::Matrix3d M = (tru.colwise() - truth_mean) * (est.colwise() - est_mean).transpose();
+  for (std::size_t i = 0; i < n; ++i) M += orientation_weight_m2 * truth[i].linear() * mapped[i].linear().transpose();
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Eigen::Matrix3d Ra = svd.matrixU() * svd.matrixV().transpose();
-  if (Ra.determinant() < 0) {
-    Eigen::Matrix3d U = svd.matrixU();
-    U.col(2) *= -1;
-    Ra = U * svd.matrixV().transpose();
-  }
-  const Eigen::Vector3d ta = truth.rowwise().mean() - Ra * est.rowwise().mean();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d x = Ra * est.col(i) + ta;
-    g.pose_error_mm.push_back((x - truth.col(i)).norm() * 1000);
-    split_error(x - truth.col(i), truth.col(i), line, g);
-    const Eigen::Matrix3d dR = rot_true[i].transpose() * Ra * dm.mapped.poses[i].linear();
+  Eigen::Matrix3d U = svd.matrixU();
+  if ((U * svd.matrixV().transpose()).determinant() < 0) U.col(2) *= -1;
+  Eigen::Isometry3d to_truth = Eigen::Isometry3d::Identity();
+  to_truth.linear() = U * svd.matrixV().transpose();
+  to_truth.translation() = truth_mean - to_truth.linear() * est_mean;
+  return to_truth;
+}
+
+void score_poses(const DatasetMapping& dm, const std::vector<Eigen::Isometry3d>& truth,
+                 const Eigen::Isometry3d& to_truth, const TruthLine& line, GirderScore& g) {
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const Eigen::Isometry3d aligned = to_truth * dm.mapped.poses[i];
+    const Eigen::Vector3d error = aligned.translation() - truth[i].translation();
+    g.pose_error_mm.push_back(error.norm() * 1000);
+    split_error(error, truth[i].translation(), line, g);
+    const Eigen::Matrix3d dR = truth[i].linear().transpose() * aligned.linear();
     g.pose_error_deg.push_back(Eigen::AngleAxisd(dR).angle() * 180 / M_PI);
   }
 }
@@ -218,16 +230,28 @@ GirderScore score_girder(const DatasetMapping& dm, const nlohmann::json& truth,
   }
   for (const TruthPlate& p : plates) changes.push_back(p.station);
   for (const TruthRoom& r : rooms) changes.push_back(r.from);
+  if (dm.mapped.refinement.ran) g.poses_kept = dm.mapped.refinement.given_poses_kept;
+  for (const PoseCorrection& c : dm.mapped.refinement.groups) {
+    g.correction_mm.push_back(c.translation_mm);
+    g.correction_deg.push_back(c.rotation_deg);
+  }
+  // The map's frame is where its poses put it: everything it placed is scored after the same
+  // rigid alignment as the poses (none without the true poses).
+  const std::vector<Eigen::Isometry3d> truth_pose =
+      truth_poses(frames, std::min<std::size_t>(dm.mapped.poses.size(), frames.size()));
+  const Eigen::Isometry3d to_truth =
+      truth_pose.empty() ? Eigen::Isometry3d::Identity() : align_to_truth(dm.mapped.poses, truth_pose);
+  const MapInTruth placed{line, to_truth};
   const StationMap& m = dm.mapped.stations;
-  score_stations(m, line, rooms, changes, o, g);
-  score_sections(m, line, rooms, o, g);
+  score_stations(m, placed, rooms, changes, o, g);
+  score_sections(m, placed, rooms, o, g);
   double seen_from = std::numeric_limits<double>::infinity(), seen_to = -seen_from;
   for (const CentrelinePoint& c : m.girder.centreline) {
-    const double s = line.station_of(c.point);
+    const double s = placed.station_of(c.point);
     seen_from = std::min(seen_from, s), seen_to = std::max(seen_to, s);
   }
-  score_plates(m, line, plates, seen_from - 0.1, seen_to + 0.1, o, g);
-  score_poses(dm, frames, line, g);
+  score_plates(m, placed, plates, seen_from - 0.1, seen_to + 0.1, o, g);
+  if (!truth_pose.empty()) score_poses(dm, truth_pose, to_truth, line, g);
   const double n = std::max<std::size_t>(1, dm.maps.size());
   g.ms_per_frame = (dm.detect_ms + dm.map_ms) / n;
   return g;
