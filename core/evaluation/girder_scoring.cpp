@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace tunnelmap {
 
@@ -143,17 +144,16 @@ void score_plates(const StationMap& m, const MapInTruth& line, const std::vector
   }
 }
 
-// A position error in the girder's frame at `truth`: along the centre line, across it
-// (horizontal; the simulator's world up is +z) and vertical.
-void split_error(const Eigen::Vector3d& error, const Eigen::Vector3d& truth, const TruthLine& line, GirderScore& g) {
+// The truth girder's frame at `truth`: along its centre line, across it (horizontal, to the
+// left; the simulator's world up is +z) and vertical. None where the line runs vertically.
+std::optional<Eigen::Matrix3d> girder_frame(const Eigen::Vector3d& truth, const TruthLine& line) {
   const Eigen::Vector3d along = line.direction_at(truth);
   Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(along);
-  if (across.norm() < 1e-6) return;
+  if (across.norm() < 1e-6) return std::nullopt;
   across.normalize();
-  const Eigen::Vector3d vertical = along.cross(across);
-  g.pose_error_along_mm.push_back(error.dot(along) * 1000);
-  g.pose_error_across_mm.push_back(error.dot(across) * 1000);
-  g.pose_error_vertical_mm.push_back(error.dot(vertical) * 1000);
+  Eigen::Matrix3d axes;
+  axes << along, across, along.cross(across);
+  return axes;
 }
 
 // Every frame's true camera-to-world pose ("pose_true"), or none when a frame lacks one.
@@ -197,10 +197,25 @@ void score_poses(const DatasetMapping& dm, const std::vector<Eigen::Isometry3d>&
   for (std::size_t i = 0; i < truth.size(); ++i) {
     const Eigen::Isometry3d aligned = to_truth * dm.mapped.poses[i];
     const Eigen::Vector3d error = aligned.translation() - truth[i].translation();
-    g.pose_error_mm.push_back(error.norm() * 1000);
-    split_error(error, truth[i].translation(), line, g);
-    const Eigen::Matrix3d dR = truth[i].linear().transpose() * aligned.linear();
-    g.pose_error_deg.push_back(Eigen::AngleAxisd(dR).angle() * 180 / M_PI);
+    const Eigen::AngleAxisd turn(aligned.linear() * truth[i].linear().transpose());  // in the world
+    FramePoseError f;
+    f.frame = static_cast<int>(i);
+    f.station_m = line.station_of(truth[i].translation());
+    f.error_mm = error.norm() * 1000;
+    f.rotation_deg = turn.angle() * 180 / M_PI;
+    g.pose_error_mm.push_back(f.error_mm);
+    g.pose_error_deg.push_back(f.rotation_deg);
+    if (const auto axes = girder_frame(truth[i].translation(), line)) {
+      const Eigen::Vector3d mm = axes->transpose() * error * 1000;
+      const Eigen::Vector3d deg = axes->transpose() * turn.axis() * (turn.angle() * 180 / M_PI);
+      f.along_mm = mm.x(), f.across_mm = mm.y(), f.vertical_mm = mm.z();
+      f.roll_deg = deg.x(), f.pitch_deg = deg.y(), f.heading_deg = deg.z();
+      f.split = true;
+      g.pose_error_along_mm.push_back(f.along_mm);
+      g.pose_error_across_mm.push_back(f.across_mm);
+      g.pose_error_vertical_mm.push_back(f.vertical_mm);
+    }
+    g.frame_pose_errors.push_back(f);
   }
 }
 

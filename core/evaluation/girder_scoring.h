@@ -10,6 +10,17 @@
 
 namespace tunnelmap {
 
+// One frame's pose against the truth after the alignment, in the truth girder's frame at the
+// frame's truth station: position along, across (positive to the left) and vertically, and
+// the rotation's parts about those three axes (roll, pitch, heading); signed.
+struct FramePoseError {
+  int frame = 0;
+  double station_m = 0.0;
+  double error_mm = 0.0, along_mm = 0.0, across_mm = 0.0, vertical_mm = 0.0;
+  double rotation_deg = 0.0, roll_deg = 0.0, pitch_deg = 0.0, heading_deg = 0.0;
+  bool split = false;  // the parts are known (not where the centre line runs vertically)
+};
+
 struct GirderScore {
   std::vector<double> width_error_mm, height_error_mm;  // per measured station, signed
   int sections_true = 0, sections_found = 0;
@@ -29,6 +40,7 @@ struct GirderScore {
   // The same position error split in the truth girder's frame at the frame's station: along
   // its centre line, across it (horizontal, positive to the left) and vertical; signed.
   std::vector<double> pose_error_along_mm, pose_error_across_mm, pose_error_vertical_mm;
+  std::vector<FramePoseError> frame_pose_errors;  // every frame, in order
   double ms_per_frame = 0.0;
 };
 

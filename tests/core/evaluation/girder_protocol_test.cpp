@@ -1,10 +1,14 @@
 // The whole-girder evaluation: the family is drawn within its ranges and reproducibly, a small
 // family mapped end to end meets the station, plate and manhole bounds over every girder, and the
-// CLI writes its two reports.
+// CLI writes its reports.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
 
 #include "core/evaluation/girder_protocol.h"
 #include "core/util/build_paths.h"
@@ -92,17 +96,42 @@ TEST(GirderProtocol, ASmallFamilyMeetsTheStationPlateAndManholeBounds) {
   EXPECT_NE(md.find("| station width error (mm) |"), std::string::npos);
 }
 
-TEST(GirderProtocol, TheCliWritesJsonAndMarkdownAndRefusesABadCount) {
+TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesABadCount) {
   IoTempDir tmp;
-  const auto run = testing::run_cli("evaluate --protocol girders --count 1 --seed 4 --min-length 6 "
+  const auto run = testing::run_cli("evaluate --protocol girders --count 1 --seed 5 --min-length 6 "
                                     "--max-length 6 -q --out " + tmp.file("out"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
   EXPECT_EQ(j["protocol"], "girders");
   ASSERT_EQ(j["girders"].size(), 1u);
+  ASSERT_TRUE(j["girders"][0]["drifted"].get<bool>());  // seed 5 draws a walk whose poses drift
   for (const char* key : {"width_error_mm", "sections", "plates", "manholes", "pose_error_mm", "poses_kept_as_given", "ms_per_frame"})
     EXPECT_TRUE(j["girders"][0].contains(key)) << key;
   EXPECT_TRUE(std::filesystem::exists(tmp.file("out/girders.md")));
+  // Every frame's pose error, one row each, agreeing with the report's distribution.
+  std::istringstream csv(testing::slurp(tmp.file("out/girder_poses.csv")));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "girder,drifted,frame,station_m,error_mm,along_mm,across_mm,vertical_mm,rotation_deg,roll_deg,"
+                  "pitch_deg,heading_deg");
+  int rows = 0;
+  double sum_mm = 0.0;
+  while (std::getline(csv, line)) {
+    double v[12];
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3],
+                          &v[4], &v[5], &v[6], &v[7], &v[8], &v[9], &v[10], &v[11]),
+              12)
+        << line;
+    EXPECT_EQ(v[1], 1.0) << line;
+    EXPECT_EQ(v[2], rows) << line;
+    EXPECT_NEAR(v[4], std::sqrt(v[5] * v[5] + v[6] * v[6] + v[7] * v[7]), 0.01) << line;
+    EXPECT_NEAR(v[8], std::sqrt(v[9] * v[9] + v[10] * v[10] + v[11] * v[11]), 0.001) << line;
+    sum_mm += v[4], ++rows;
+  }
+  EXPECT_EQ(rows, j["girders"][0]["frames"].get<int>());
+  ASSERT_GT(rows, 0);
+  EXPECT_GT(sum_mm / rows, 0.5);  // the drift leaves millimetres after the refinement
+  EXPECT_NEAR(sum_mm / rows, j["girders"][0]["pose_error_mm"]["mean"].get<double>(), 0.01);
   EXPECT_FALSE(std::filesystem::exists(tmp.file("out/.girders-work")));
   EXPECT_EQ(testing::run_cli("evaluate --protocol girders --count 0 --out " + tmp.file("x")).exit_code, 2);
 }

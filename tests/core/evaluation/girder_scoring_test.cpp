@@ -67,6 +67,7 @@ TEST(GirderScoring, ThePoseErrorIsSplitAlongAcrossAndVerticallyInTheGirdersFrame
   }
   const GirderScore g = score_girder(mapped, t.truth, frames);
   ASSERT_EQ(g.pose_error_along_mm.size(), truths.size());
+  ASSERT_EQ(g.frame_pose_errors.size(), truths.size());
   for (std::size_t i = 0; i < truths.size(); ++i) {
     const double s = 1.0 + 2.0 * static_cast<double>(i / 2);
     const Eigen::Vector3d along = t.along_at(s), up = Eigen::Vector3d::UnitZ(), left = up.cross(along);
@@ -76,6 +77,12 @@ TEST(GirderScoring, ThePoseErrorIsSplitAlongAcrossAndVerticallyInTheGirdersFrame
     EXPECT_NEAR(g.pose_error_vertical_mm[i], e.dot(up), 0.01) << i;
     EXPECT_NEAR(g.pose_error_mm[i], e.norm(), 0.01) << i;
     EXPECT_NEAR(g.pose_error_deg[i], 0.0, 1e-6) << i;
+    const FramePoseError& f = g.frame_pose_errors[i];  // the same, frame by frame
+    EXPECT_EQ(f.frame, static_cast<int>(i));
+    EXPECT_NEAR(f.station_m, s, 0.01) << i;
+    EXPECT_NEAR(f.along_mm, e.dot(along), 0.01) << i;
+    EXPECT_NEAR(f.across_mm, e.dot(left), 0.01) << i;
+    EXPECT_NEAR(f.vertical_mm, e.dot(up), 0.01) << i;
   }
 }
 
@@ -105,6 +112,11 @@ TEST(GirderScoring, TheAlignmentFitsTheCameraCentresNotACommonTiltOfTheCameras) 
   for (std::size_t i = 0; i < 30; ++i) {
     EXPECT_LT(g.pose_error_mm[i], 2.0) << i;
     EXPECT_NEAR(g.pose_error_deg[i], 0.2, 0.01) << i;
+    // The cameras pitched up about their own x axis (to the right): about the girder's
+    // across axis (to the left), negative; no roll, no heading.
+    EXPECT_NEAR(g.frame_pose_errors[i].pitch_deg, -0.2, 0.01) << i;
+    EXPECT_NEAR(g.frame_pose_errors[i].roll_deg, 0.0, 0.01) << i;
+    EXPECT_NEAR(g.frame_pose_errors[i].heading_deg, 0.0, 0.01) << i;
   }
 }
 
