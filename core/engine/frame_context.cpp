@@ -12,11 +12,12 @@ constexpr double kGroupTurnDeg = 5.0;  // as group_poses groups a whole sequence
 
 }  // namespace
 
-FrameContext::FrameContext(const Parameters& params)
+FrameContext::FrameContext(const Parameters& params, const Eigen::Vector3d& world_up)
     : tunnel_(tunnel_options(params)),
       stations_(station_map_options(params), tunnel_),
       pose_group_m_(fusion_options(params).pose_group_m) {
-  const SlamOptions slam = slam_options(params);
+  SlamOptions slam = slam_options(params);
+  slam.world_up = world_up;
   if (slam.localise) slam_.emplace(slam);
 }
 

@@ -16,7 +16,8 @@ namespace tunnelmap {
 
 class FrameContext {
  public:
-  explicit FrameContext(const Parameters& params);
+  // `world_up`: the posed frames' world up (the dataset's).
+  FrameContext(const Parameters& params, const Eigen::Vector3d& world_up);
 
   // Frame `index`'s result (detected without context) gets the context of the frames before it,
   // then becomes part of the context of the frames after it. Returns the pose it was mapped

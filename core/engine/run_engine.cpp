@@ -41,7 +41,7 @@ RunEngine::RunEngine(RunSettings settings, const FrameSource* input, ContextRule
     : settings_(std::move(settings)),
       rule_(rule),
       runner_(make_method_runner(input_or_none(input), settings_)),
-      context_(settings_.params) {}
+      context_(settings_.params, world_up(input_or_none(input))) {}
 
 void RunEngine::run_next(int index, DepthFrame& frame, FrameResult& result) {
   if (rule_ == ContextRule::Sequence && runner_.method() == Method::Qhull) {

@@ -4,17 +4,22 @@
 
 namespace tunnelmap {
 
+Eigen::Vector3d world_up(const FrameSource& source) {
+  const Dataset* ds = source.dataset();
+  return ds ? ds->up : Eigen::Vector3d::UnitZ();
+}
+
 MethodRunner make_method_runner(const FrameSource& source, const RunSettings& settings) {
   MethodRunner runner(settings.method, settings.params);
   runner.set_camera_up(settings.camera_up);
-  if (const Dataset* ds = source.dataset()) runner.set_world_up(ds->up);
+  runner.set_world_up(world_up(source));
   return runner;
 }
 
 Pipeline make_pipeline(const FrameSource& source, const RunSettings& settings) {
   Pipeline pipeline(settings.params);
   pipeline.set_camera_up(settings.camera_up);
-  if (const Dataset* ds = source.dataset()) pipeline.set_world_up(ds->up);
+  pipeline.set_world_up(world_up(source));
   return pipeline;
 }
 

@@ -20,6 +20,9 @@ struct RunSettings {
   bool live = false;                         // frames arrive one at a time (a camera)
 };
 
+// The world's up of posed frames: the dataset's, else +Z.
+Eigen::Vector3d world_up(const FrameSource& source);
+
 // The input set-up: the method's runner with the parameters, the user's camera up and the
 // dataset's world up (the one place a front end's pipeline gets configured).
 MethodRunner make_method_runner(const FrameSource& source, const RunSettings& settings);

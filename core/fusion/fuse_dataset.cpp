@@ -117,7 +117,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   const auto tm = std::chrono::steady_clock::now();
   std::vector<int> groups = group_poses(poses, fo.pose_group_m);
   if (s.detect) {
-    MappedSequence ms = map_posed_sequence(maps, walls, poses, params, s.refine_poses);
+    MappedSequence ms = map_posed_sequence(maps, walls, poses, ds.up, params, s.refine_poses);
     r.refinement = std::move(ms.refinement);
     r.stations = std::move(ms.stations);
     poses = ms.poses;

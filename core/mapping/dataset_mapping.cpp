@@ -59,7 +59,7 @@ DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_po
     return !out.cancelled;
   });
   if (out.cancelled) return out;
-  out.mapped = map_posed_sequence(out.maps, walls, poses, pipeline.params(), refine_poses);
+  out.mapped = map_posed_sequence(out.maps, walls, poses, ds.up, pipeline.params(), refine_poses);
   out.map_ms = out.mapped.map_ms + extract_ms;
   out.mapped.stations.timings_ms["map"] = out.map_ms;
   return out;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tunnelmap {
 
@@ -39,6 +40,15 @@ int PlateTracks::update(int index, double station_m, double sigma_m, double came
 bool PlateTracks::any_within(double from_m, double to_m) const {
   return std::any_of(tracks_.begin(), tracks_.end(),
                      [&](const Track& t) { return t.station_m >= from_m && t.station_m <= to_m; });
+}
+
+double PlateTracks::nearest_within(double from_m, double to_m, double near_m) const {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  for (const Track& t : tracks_)
+    if (t.station_m >= from_m && t.station_m <= to_m &&
+        (std::isnan(best) || std::abs(t.station_m - near_m) < std::abs(best - near_m)))
+      best = t.station_m;
+  return best;
 }
 
 }  // namespace tunnelmap

@@ -36,6 +36,8 @@ class PlateTracks {
 
   // A tracked plate lies within [from_m, to_m] of the walk.
   bool any_within(double from_m, double to_m) const;
+  // The station of the tracked plate within [from_m, to_m] nearest to `near_m`; NaN if none.
+  double nearest_within(double from_m, double to_m, double near_m) const;
   int size() const { return static_cast<int>(tracks_.size()); }
   double station_m(int index) const { return tracks_.at(static_cast<std::size_t>(index)).station_m; }
 

@@ -26,7 +26,7 @@ void follow_fitted_centreline(StationMapBuilder& builder, const std::vector<Tunn
 }  // namespace
 
 MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vector<FrameWalls>& walls,
-                                  const std::vector<Eigen::Isometry3d>& poses,
+                                  const std::vector<Eigen::Isometry3d>& poses, const Eigen::Vector3d& world_up,
                                   const Parameters& params, bool refine) {
   const auto t0 = std::chrono::steady_clock::now();
   MappedSequence out;
@@ -34,7 +34,9 @@ MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vecto
   out.poses = poses;
   const StationMapOptions so = station_map_options(params);
   if (refine) {
-    StructureSlam slam(slam_options(params));
+    SlamOptions slam_opts = slam_options(params);
+    slam_opts.world_up = world_up;
+    StructureSlam slam(slam_opts);
     for (std::size_t i = 0; i < maps.size(); ++i) slam.add_frame(maps[i], walls[i], poses[i], out.groups[i]);
     out.refinement = slam.finish();
     if (out.refinement.ran) out.poses = out.refinement.poses;

@@ -22,9 +22,10 @@ struct MappedSequence {
 };
 
 // `maps[i]`: frame i's detection without context (updated in place with it); `walls[i]` its
-// samples (extract_frame_walls); `poses[i]` its forward-kinematics or explicit pose.
+// samples (extract_frame_walls); `poses[i]` its forward-kinematics or explicit pose, in a world
+// whose up is `world_up`.
 MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vector<FrameWalls>& walls,
-                                  const std::vector<Eigen::Isometry3d>& poses,
+                                  const std::vector<Eigen::Isometry3d>& poses, const Eigen::Vector3d& world_up,
                                   const Parameters& params, bool refine);
 
 }  // namespace tunnelmap

@@ -8,7 +8,7 @@ namespace tunnelmap {
 bool operator==(const SlamOptions& a, const SlamOptions& b) {
   return a.odometry_m_per_sqrt_m == b.odometry_m_per_sqrt_m && a.odometry_deg_per_sqrt_m == b.odometry_deg_per_sqrt_m &&
          a.odometry_in_world == b.odometry_in_world && a.band_m == b.band_m &&
-         a.wall_continuity_m == b.wall_continuity_m && a.wall_turn_rad == b.wall_turn_rad && a.max_continuity_gap_m == b.max_continuity_gap_m &&
+         a.wall_continuity_m == b.wall_continuity_m && a.wall_turn_rad == b.wall_turn_rad && a.compartment_turn_rad == b.compartment_turn_rad && a.max_continuity_gap_m == b.max_continuity_gap_m &&
          a.max_wall_depth_m == b.max_wall_depth_m && a.max_plate_depth_m == b.max_plate_depth_m &&
          a.plate_gate_m == b.plate_gate_m && a.point_sigma_m == b.point_sigma_m &&
          a.patch_floor_m == b.patch_floor_m && a.depth_step_m == b.depth_step_m && a.correction_sigmas == b.correction_sigmas && a.window_groups == b.window_groups &&
@@ -17,7 +17,7 @@ bool operator==(const SlamOptions& a, const SlamOptions& b) {
          a.min_patch_points == b.min_patch_points && a.layer_tolerance_m == b.layer_tolerance_m &&
          a.max_layer_shift_m == b.max_layer_shift_m && a.max_layer_slope == b.max_layer_slope &&
          a.degenerate_ratio == b.degenerate_ratio && a.localise == b.localise &&
-         a.cloud_max_range_m == b.cloud_max_range_m;
+         a.cloud_max_range_m == b.cloud_max_range_m && a.world_up == b.world_up;
 }
 
 SlamOptions slam_options(const Parameters& p) {
@@ -28,6 +28,7 @@ SlamOptions slam_options(const Parameters& p) {
   o.band_m = p.get(slam_keys::band_m);
   o.wall_continuity_m = mm_to_m(p.get(slam_keys::wall_continuity_mm));
   o.wall_turn_rad = p.get(slam_keys::wall_turn_deg) * M_PI / 180.0;
+  o.compartment_turn_rad = p.get(slam_keys::compartment_turn_deg) * M_PI / 180.0;
   o.max_wall_depth_m = p.get(slam_keys::max_wall_depth_m);
   o.max_plate_depth_m = p.get(slam_keys::max_plate_depth_m);
   o.plate_gate_m = p.get(slam_keys::plate_gate_m);
@@ -45,7 +46,7 @@ SlamOptions slam_options(const Parameters& p) {
 ParameterGroup slam_parameter_group() {
   using namespace slam_keys;
   return {{odometry_mm_per_sqrt_m.spec(), odometry_deg_per_sqrt_m.spec(), odometry_in_world.spec(), band_m.spec(),
-           wall_continuity_mm.spec(), wall_turn_deg.spec(), max_wall_depth_m.spec(),
+           wall_continuity_mm.spec(), wall_turn_deg.spec(), compartment_turn_deg.spec(), max_wall_depth_m.spec(),
            max_plate_depth_m.spec(), plate_gate_m.spec(), point_sigma_mm.spec(), patch_floor_mm.spec(),
            depth_step_mm.spec(), correction_sigmas.spec(), window_groups.spec(),
            window_iterations.spec(), localise.spec()},

@@ -1,6 +1,7 @@
 #pragma once
 // Parameters of localisation and mapping against the girder's structure (slam.*), declared
 // once, and the options StructureSlam takes. See docs/tunnel-map.md.
+#include <Eigen/Core>
 #include <cmath>
 
 #include "core/normals/cloud_options.h"
@@ -33,12 +34,17 @@ inline constexpr ParameterKey<double> wall_continuity_mm{
     "walk runs, and only when the measurements alone demand a correction); 0 leaves each "
     "compartment free"};
 inline constexpr ParameterKey<double> wall_turn_deg{
-    "slam.wall_turn_deg", "deg", 0.05, 0.0, 10.0, 0.01, Stage::Map, "Wall roll and kink",
-    "How far a wall may roll about the girder's axis across a diaphragm (a change of cross-fall, "
-    "plate distortion), and how far its bend may kink there (a curve or camber turns evenly): "
-    "it ties each compartment's roll and turn to the last, which nothing else across a plate "
-    "does but the odometry (applied with the wall continuity, slam.wall_continuity_mm); 0 "
-    "leaves them free"};
+    "slam.wall_turn_deg", "deg", 0.05, 0.0, 10.0, 0.01, Stage::Map, "Wall roll",
+    "How far a side wall may roll about the girder's axis across a diaphragm (a change of "
+    "cross-fall, plate distortion), measured against the world's up: it ties each "
+    "compartment's roll to the last, which nothing else across a plate does but the odometry "
+    "(applied with the wall continuity, slam.wall_continuity_mm); 0 leaves it free"};
+inline constexpr ParameterKey<double> compartment_turn_deg{
+    "slam.compartment_turn_deg", "deg", 0.01, 0.0, 10.0, 0.005, Stage::Map, "Turn between compartments",
+    "How far a compartment's walls may point off the even turn of its two neighbours: a girder "
+    "follows straights, arcs and transition curves, whose turn changes slowly, whether its "
+    "walls curve or kink at the plates (applied by the final optimisation, with the wall "
+    "continuity); 0 leaves each compartment's direction to the odometry"};
 inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};
@@ -94,6 +100,7 @@ struct SlamOptions {
   double band_m = slam_keys::band_m.default_value;
   double wall_continuity_m = mm_to_m(slam_keys::wall_continuity_mm.default_value);
   double wall_turn_rad = slam_keys::wall_turn_deg.default_value * M_PI / 180.0;
+  double compartment_turn_rad = slam_keys::compartment_turn_deg.default_value * M_PI / 180.0;
   double max_continuity_gap_m = 5.0;  // no tie across a longer unseen stretch of wall
   double max_wall_depth_m = slam_keys::max_wall_depth_m.default_value;
   double max_plate_depth_m = slam_keys::max_plate_depth_m.default_value;
@@ -105,6 +112,9 @@ struct SlamOptions {
   int window_groups = slam_keys::window_groups.default_value;
   int window_iterations = slam_keys::window_iterations.default_value;
   bool localise = slam_keys::localise.default_value;
+  // The posed frames' world up (the dataset's): a wall's roll across a plate is measured
+  // against it.
+  Eigen::Vector3d world_up = Eigen::Vector3d::UnitZ();
   // cloud.max_range_m: depth beyond it never reaches a plate, so a plate near it is biased.
   double cloud_max_range_m = cloud_keys::max_range_m.default_value;
   // Odometry of pose groups that did not move still has this much uncertainty.

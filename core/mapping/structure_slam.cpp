@@ -6,6 +6,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/mapping/compartment_bends.h"
 #include "core/mapping/slam_patches.h"
 #include "core/solvers/correction_evidence.h"
 
@@ -215,19 +216,23 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
 void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point) {
   if (!(options_.wall_continuity_m > 0.0)) return;
   const int kind = patch.wall * 2 + (patch.zone == FramePatch::Zone::Inner ? 1 : 0);
-  const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point});
+  const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point, patch.station_m});
   if (!added) return;
   const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
   // The point between the two, held by the current pose so that it moves with the map.
   auto tie = [&](const ZoneLayer& other, long other_band) {
     if (other.plane == plane || !plate_between(other_band, patch.band)) return;
     const Eigen::Isometry3d& pose = graph_.poses.back();
-    const Eigen::Vector3d between = pose.inverse() * (0.5 * (other.point + point));
-    // Across the wall, perpendicular to the girder: the normals agree there unless it rolls.
-    const Eigen::Vector3d normal = graph_.planes[static_cast<std::size_t>(plane)].normal;
-    const Eigen::Vector3d across = pose.linear().transpose() * groups_.back().axis.cross(normal).normalized();
+    const Eigen::Vector3d between = pose.inverse() * wall_at_plate(other, ZoneLayer{plane, point, patch.station_m});
+    // A side wall's normal along the world's up is the sine of the girder's cross-fall: the
+    // same either side of the plate unless the girder rolls there, however it turns or climbs
+    // (a turn about the up leaves it, a climb turns about the normal itself). Against the
+    // girder's own up instead, a curve that climbs would read as a roll at every plate, all
+    // one way. A floor's or roof's normal says nothing of a roll along the up.
+    const bool side_wall = patch.wall / 2 == 0;
+    const Eigen::Vector3d up = pose.linear().transpose() * options_.world_up;
     graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between,
-                                   options_.wall_continuity_m, across, options_.wall_turn_rad});
+                                   options_.wall_continuity_m, up, side_wall ? options_.wall_turn_rad : 0.0});
   };
   if (it != zone_layers_.begin()) {
     const auto below = std::prev(it);
@@ -236,7 +241,29 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
   const auto above = std::next(it);
   if (above != zone_layers_.end() && above->first.first == kind && above->first.second - patch.band <= max_gap)
     tie(above->second, above->first.second);
-  bend_across_plates(it);
+}
+
+// The girder's turn tied from one compartment to the next, once the walk has seen its plates.
+std::vector<PlaneBend> StructureSlam::turn_ties() const {
+  if (!(options_.compartment_turn_rad > 0.0)) return {};
+  std::vector<WallBand> bands;
+  for (const auto& [key, layer] : zone_layers_) bands.push_back({key.first, key.second, layer.plane});
+  std::vector<double> plates;
+  for (int i = 0; i < plates_.size(); ++i) plates.push_back(plates_.station_m(i));
+  return compartment_bends(bands, plates, options_.band_m, options_.compartment_turn_rad);
+}
+
+// Where two stretches of a wall either side of a plate meet: on the line between their points,
+// at the plate. A girder that curves turns there (a chorded girder kinks at its plates), and
+// two planes that meet at an angle agree on their distance from a point only where they meet;
+// the midpoint of two points seen at different distances from the plate would see the turn
+// as a step (a 1.5 degree kink and points 1 m and 3 m from the plate: 26 mm).
+Eigen::Vector3d StructureSlam::wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const {
+  const double lo = std::min(a.station_m, b.station_m), hi = std::max(a.station_m, b.station_m);
+  const double plate = plates_.nearest_within(lo, hi, 0.5 * (lo + hi));
+  if (std::isnan(plate) || !(hi - lo > 0.0)) return 0.5 * (a.point + b.point);
+  const double t = (plate - a.station_m) / (b.station_m - a.station_m);
+  return a.point + t * (b.point - a.point);
 }
 
 // A plate the walk has seen lies between bands `a` and `b` of a wall.
@@ -244,30 +271,6 @@ bool StructureSlam::plate_between(long a, long b) const {
   const double lo = (std::min(a, b) + 1) * options_.band_m;
   const double hi = std::max(a, b) * options_.band_m;
   return plates_.any_within(lo - 0.5 * options_.band_m, hi + 0.5 * options_.band_m);
-}
-
-// The continuity ties hold the walls' distances across a plate, and their roll, but let them
-// turn there as a curving girder does: each compartment could still turn or pitch by what
-// the odometry allows over the climb. A girder's curve does not kink at a plate, so every
-// three neighbouring bands of a kind that span a plate bend evenly: the middle one's
-// direction lies between the outer two's.
-void StructureSlam::bend_across_plates(ZoneLayers::iterator added) {
-  if (!(options_.wall_turn_rad > 0.0)) return;
-  const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
-  const int kind = added->first.first;
-  auto first = added;
-  for (int k = 0; k < 2 && first != zone_layers_.begin() && std::prev(first)->first.first == kind; ++k) --first;
-  std::vector<ZoneLayers::iterator> run;
-  for (auto it = first; it != zone_layers_.end() && it->first.first == kind && run.size() < 5; ++it) run.push_back(it);
-  for (std::size_t i = 0; i + 2 < run.size(); ++i) {
-    const long a = run[i]->first.second, b = run[i + 1]->first.second, c = run[i + 2]->first.second;
-    const bool has_added = run[i] == added || run[i + 1] == added || run[i + 2] == added;
-    if (!has_added || c - a > max_gap || !plate_between(a, c)) continue;
-    const int pa = run[i]->second.plane, pb = run[i + 1]->second.plane, pc = run[i + 2]->second.plane;
-    if (pa == pb || pb == pc || pa == pc) continue;
-    const double weight_c = static_cast<double>(b - a) / static_cast<double>(c - a);
-    graph_.bends.push_back({pa, pb, pc, 1.0 - weight_c, weight_c, options_.wall_turn_rad});
-  }
 }
 
 void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {
@@ -440,6 +443,7 @@ PoseRefinement StructureSlam::finish() {
   const auto t0 = std::chrono::steady_clock::now();
   PoseRefinement out;
   if (groups_.empty()) return out;
+  graph_.bends = turn_ties();
   const PoseGraphSolution s = solve_under_evidence(
       graph_, {}, static_cast<int>(groups_.size()) - 1, options_.correction_sigmas,
       [&](const PoseGraph& g) { return solve_at_given_poses(g); }, out.evidence, out.given_poses_kept);

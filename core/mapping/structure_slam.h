@@ -85,13 +85,15 @@ class StructureSlam {
   struct ZoneLayer {
     int plane;
     Eigen::Vector3d point;  // world, where it was first seen
+    double station_m;       // of that point, along the walk
   };
   // (wall * 2 + 1 for the middle plate, band) -> that zone's layer there.
   using ZoneLayers = std::map<std::pair<int, long>, ZoneLayer>;
   ZoneLayers zone_layers_;
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
-  void bend_across_plates(ZoneLayers::iterator added);
+  std::vector<PlaneBend> turn_ties() const;
   bool plate_between(long a, long b) const;
+  Eigen::Vector3d wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const;
   PlateTracks plates_;
   void share_systematic_error(int pose, int plane, double sigma_m);
   struct SharedView {

@@ -136,25 +136,39 @@ void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double ro
   problem.AddResidualBlock(turn, new ceres::HuberLoss(robust_sigmas), pose.q, a.n, b.n);
 }
 
-// The middle plane's normal against the weighted mean of its neighbours' (a normal's length
-// stays 1 on its manifold, so the residual's part along it is second order).
+// The middle stretch's mean normal against the weighted mean of its neighbours' (a normal's
+// length stays 1 on its manifold, so the residual's part along it is second order). The
+// parameters are the normals of a, then b, then c.
 struct BendResidual {
+  int na, nb, nc;  // planes in each stretch
   double weight_a, weight_c, inv_sigma;
 
   template <typename T>
-  bool operator()(const T* na, const T* nb, const T* nc, T* residual) const {
-    const Eigen::Map<const Eigen::Matrix<T, 3, 1>> Na(na), Nb(nb), Nc(nc);
+  bool operator()(T const* const* normals, T* residual) const {
+    auto mean = [&](int from, int count) {
+      Eigen::Matrix<T, 3, 1> m = Eigen::Matrix<T, 3, 1>::Zero();
+      for (int i = from; i < from + count; ++i) m += Eigen::Map<const Eigen::Matrix<T, 3, 1>>(normals[i]);
+      return Eigen::Matrix<T, 3, 1>(m / T(count));
+    };
     Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
-    r = T(inv_sigma) * (Nb - T(weight_a) * Na - T(weight_c) * Nc);
+    r = T(inv_sigma) * (mean(na, nb) - T(weight_a) * mean(0, na) - T(weight_c) * mean(na + nb, nc));
     return true;
   }
 };
 
 void add_bend(ceres::Problem& problem, const PlaneBend& b, double robust_sigmas, std::vector<PlaneBlock>& planes) {
-  auto* cost = new ceres::AutoDiffCostFunction<BendResidual, 3, 3, 3, 3>(
-      new BendResidual{b.weight_a, b.weight_c, 1.0 / b.sigma_rad});
-  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), planes[static_cast<std::size_t>(b.a)].n,
-                           planes[static_cast<std::size_t>(b.b)].n, planes[static_cast<std::size_t>(b.c)].n);
+  if (b.a.empty() || b.b.empty() || b.c.empty()) return;
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<BendResidual>(new BendResidual{
+      static_cast<int>(b.a.size()), static_cast<int>(b.b.size()), static_cast<int>(b.c.size()), b.weight_a,
+      b.weight_c, 1.0 / b.sigma_rad});
+  std::vector<double*> normals;
+  for (const std::vector<int>* stretch : {&b.a, &b.b, &b.c})
+    for (int plane : *stretch) {
+      normals.push_back(planes[static_cast<std::size_t>(plane)].n);
+      cost->AddParameterBlock(3);
+    }
+  cost->SetNumResiduals(3);
+  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), normals);
 }
 
 void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<PoseBlock>& poses) {

@@ -38,9 +38,9 @@ struct PlanePatch {
 // them, they lie the same distance from it within `sigma_m`. Their directions may differ (a
 // curving wall): half-way between two tangents of a smooth curve, both are off it alike. The
 // point is held in the frame of `pose`, so that it moves with the map.
-// With `sigma_rad` > 0 their normals also agree along `across` (a unit direction in the
-// planes, held in the pose's frame): the planes may turn about any axis but the one
-// perpendicular to `across` in them, i.e. a wall bends along the girder but does not roll.
+// With `sigma_rad` > 0 their normals also agree along `across` (a unit direction held in the
+// pose's frame): for a side wall and the world's up, the wall may turn and climb but does not
+// roll.
 struct PlaneContinuity {
   int a = 0, b = 0;
   int pose = 0;
@@ -50,11 +50,12 @@ struct PlaneContinuity {
   double sigma_rad = 0.0;                            // 0: directions free
 };
 
-// Three stretches of one wall in order along it, `a` and `c` either side of `b`: a girder's
-// curve does not kink at a plate, so b's direction lies between theirs as b lies between them
-// (`weight_a` + `weight_c` = 1), to within `sigma_rad`.
+// Three stretches of one wall in order along it, `a` and `c` either side of `b`, each the mean
+// of its planes' normals: the girder turns evenly, so b's direction lies between theirs as b
+// lies between them (`weight_a` + `weight_c` = 1), to within `sigma_rad`
+// (core/mapping/compartment_bends.h).
 struct PlaneBend {
-  int a = 0, b = 0, c = 0;
+  std::vector<int> a, b, c;
   double weight_a = 0.5, weight_c = 0.5;
   double sigma_rad = 0.001;
 };

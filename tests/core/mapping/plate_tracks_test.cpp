@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 
 namespace tunnelmap {
@@ -68,6 +69,17 @@ TEST(PlateTracks, TellsWhetherAPlateLiesWithinAStretch) {
   tracks.view(4.5, 0.002, 1.0, std::ref(planes));
   EXPECT_TRUE(tracks.any_within(4.0, 5.0));
   EXPECT_FALSE(tracks.any_within(4.6, 8.0));
+}
+
+TEST(PlateTracks, FindsThePlateOfAStretchNearestAStation) {
+  PlateTracks tracks;
+  Planes planes;
+  tracks.view(4.5, 0.002, 1.0, std::ref(planes));
+  tracks.view(8.5, 0.002, 5.0, std::ref(planes));
+  EXPECT_DOUBLE_EQ(tracks.nearest_within(4.0, 9.0, 7.0), 8.5);
+  EXPECT_DOUBLE_EQ(tracks.nearest_within(4.0, 9.0, 6.0), 4.5);
+  EXPECT_DOUBLE_EQ(tracks.nearest_within(4.0, 8.0, 7.0), 4.5);  // 8.5 lies outside
+  EXPECT_TRUE(std::isnan(tracks.nearest_within(5.0, 8.0, 6.0)));
 }
 
 }  // namespace

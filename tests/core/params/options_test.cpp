@@ -136,7 +136,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "zones.forbidden_band_m", "tunnel.design_width_m", "tunnel.design_height_m", "map.station_step_m",
       "map.tolerance_mm", "map.section_change_mm", "map.min_section_m", "map.min_station_points", "map.near_range_m", "map.per_frame_sizes",
       "map.follow_centreline", "map.centreline_window_m", "map.centreline_node_m",
-      "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m", "slam.wall_continuity_mm", "slam.wall_turn_deg",
+      "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m", "slam.wall_continuity_mm", "slam.wall_turn_deg", "slam.compartment_turn_deg",
       "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
       "slam.patch_floor_mm", "slam.depth_step_mm", "slam.correction_sigmas", "slam.window_groups", "slam.window_iterations", "slam.localise",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",

@@ -289,7 +289,7 @@ TEST(PoseGraph, ThreeStretchesOfAWallBendEvenly) {
     const Eigen::Vector3d along = Eigen::AngleAxisd((k == 0 ? 0.0 : 3.0) * M_PI / 180.0, Eigen::Vector3d::UnitZ()) * X;
     g.patches.push_back(patch_of(I, 0, k, Eigen::Vector3d::Zero(), along, Eigen::Vector3d::UnitZ(), -0.5, 0.5, 0.0, 1.0));
   }
-  g.bends.push_back({0, 1, 2, 0.5, 0.5, 0.05 * M_PI / 180.0});
+  g.bends.push_back({{0}, {1}, {2}, 0.5, 0.5, 0.05 * M_PI / 180.0});
   const PoseGraphSolution s = solve_pose_graph(g);
   const double middle_deg = std::atan2(-s.planes[1].normal.x(), s.planes[1].normal.y()) * 180.0 / M_PI;
   EXPECT_NEAR(middle_deg, 1.5, 0.01);

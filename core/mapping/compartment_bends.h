@@ -1,0 +1,31 @@
+#pragma once
+// The girder's turn tied from one compartment to the next. A girder's alignment is straights,
+// circular arcs and transition curves: it turns evenly over many compartments. Its walls may
+// curve, or run straight and kink, at the plates or anywhere between (a chorded girder's
+// splices); either way the mean direction of a compartment's walls is the girder's direction
+// near the compartment's middle. So of three neighbouring compartments, the middle one's mean
+// wall direction lies between the outer two's, in proportion to the distances between them.
+// Ties of bands either side of one plate cannot say as much: a chorded girder may turn at the
+// plate itself.
+#include <vector>
+
+#include "core/solvers/pose_graph.h"
+
+namespace tunnelmap {
+
+// One band of one kind of wall surface (a wall and its zone) and its plane landmark.
+struct WallBand {
+  int kind = 0;
+  long band = 0;  // [band, band + 1) * band_m along the walk
+  int plane = 0;
+};
+
+// Per kind, each compartment's whole bands (one with a plate inside is two surfaces, not a
+// plane, and takes no part), at their mean station; every three neighbouring compartments
+// that have bands are tied to within `sigma_rad`. Compartments lie between the plates at
+// `plate_stations_m` (along the walk, as the bands); the stretches before the first and past
+// the last plate are open-ended and take no part.
+std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
+                                         double band_m, double sigma_rad);
+
+}  // namespace tunnelmap
