@@ -38,6 +38,7 @@ struct EvaluateOptions {
   long long seed = 1;
   int count = 30;
   std::optional<double> min_length, max_length;
+  std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius;
   bool no_pose_refinement = false;
   bool check = false;
   bool quiet = false;
@@ -88,6 +89,26 @@ std::string protocol_text(const EvaluateOptions& o, const ProtocolOptions& p) {
   return s.str();
 }
 
+// --curved-fraction, --drifted-fraction, --min-radius, --max-radius into the family's ranges.
+void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
+  auto fraction = [](const std::optional<double>& value, const char* flag, double& into) {
+    if (!value) return;
+    if (!(*value >= 0.0 && *value <= 1.0)) throw ParameterError(std::string("evaluate: ") + flag + " must be in [0, 1]");
+    into = *value;
+  };
+  fraction(o.curved_fraction, "--curved-fraction", r.curved_fraction);
+  fraction(o.drifted_fraction, "--drifted-fraction", r.drifted_fraction);
+  if (o.min_radius && o.max_radius && !(*o.max_radius >= *o.min_radius))
+    throw ParameterError("evaluate: --max-radius must not be below --min-radius");
+  if (o.min_radius) r.min_radius_m = *o.min_radius;
+  if (o.max_radius) r.max_radius_m = *o.max_radius;
+  // One bound given: the other follows it where the default would cross it.
+  if (o.min_radius) r.max_radius_m = std::max(r.max_radius_m, r.min_radius_m);
+  if (o.max_radius) r.min_radius_m = std::min(r.min_radius_m, r.max_radius_m);
+  if (!(r.min_radius_m >= 50.0 && r.max_radius_m <= 100000.0))
+    throw ParameterError("evaluate: --min-radius and --max-radius must be within [50, 100000] m");
+}
+
 // --protocol girders: the random family, mapped and scored (girders.json, girders.md,
 // girder_poses.csv).
 int run_girders_protocol(const EvaluateOptions& o) {
@@ -104,6 +125,7 @@ int run_girders_protocol(const EvaluateOptions& o) {
   g.ranges.max_length_m = std::max(g.ranges.max_length_m, g.ranges.min_length_m);
   if (!(g.ranges.min_length_m >= 3.0 && g.ranges.max_length_m <= 1000.0))
     throw ParameterError("evaluate: girder lengths must be within [3, 1000] m");
+  set_alignment_and_drift(o, g.ranges);
   Parameters check_sets;
   check_sets.set_from_strings(o.sets);  // a bad --set fails now, not after the first girder
   if (!o.quiet) g.progress = [](const std::string& line) { std::printf("%s\n", line.c_str()); std::fflush(stdout); };
@@ -236,6 +258,10 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--count", o.count, "Girders drawn with --protocol girders")->capture_default_str();
   cmd->add_option("--min-length", o.min_length, "Shortest girder drawn, metres (default 30)");
   cmd->add_option("--max-length", o.max_length, "Longest girder drawn, metres (default 40)");
+  cmd->add_option("--curved-fraction", o.curved_fraction, "Share of girders drawn on a horizontal curve with gradient and cross-fall, 0-1 (default 0.3)");
+  cmd->add_option("--drifted-fraction", o.drifted_fraction, "Share of walks whose poses drift, 0-1 (default 0.5)");
+  cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");
+  cmd->add_option("--max-radius", o.max_radius, "Widest curve radius drawn, metres (default 1000)");
   cmd->add_flag("--no-pose-refinement", o.no_pose_refinement, "Map the girders with the poses as given");
   cmd->add_flag("--check", o.check, "Exit with code 1 when an acceptance bound fails");
   cmd->add_flag("--quiet,-q", o.quiet, "Only print the final line");

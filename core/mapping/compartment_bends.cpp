@@ -15,16 +15,15 @@ struct Compartment {
 
 // Per kind, per compartment (the number of plates before it): its whole bands.
 std::map<int, std::map<int, Compartment>> compartments(const std::vector<WallBand>& bands,
-                                                       const std::vector<double>& plates, double band_m) {
+                                                       const std::vector<double>& plates) {
   std::map<int, std::map<int, Compartment>> out;
   for (const WallBand& b : bands) {
-    const double lo = static_cast<double>(b.band) * band_m, hi = lo + band_m;
-    const auto next = std::lower_bound(plates.begin(), plates.end(), lo);
-    if (next != plates.end() && *next < hi) continue;  // a plate inside the band
+    const auto next = std::upper_bound(plates.begin(), plates.end(), b.from_m);
+    if (next != plates.end() && *next < b.to_m) continue;  // a plate inside the band
     if (next == plates.begin() || next == plates.end()) continue;  // open-ended
     Compartment& c = out[b.kind][static_cast<int>(next - plates.begin())];
     c.planes.push_back(b.plane);
-    c.station_sum_m += lo + 0.5 * band_m;
+    c.station_sum_m += 0.5 * (b.from_m + b.to_m);
   }
   return out;
 }
@@ -32,10 +31,10 @@ std::map<int, std::map<int, Compartment>> compartments(const std::vector<WallBan
 }  // namespace
 
 std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
-                                         double band_m, double sigma_rad) {
+                                         double sigma_rad) {
   std::sort(plate_stations_m.begin(), plate_stations_m.end());
   std::vector<PlaneBend> out;
-  for (const auto& [kind, of_kind] : compartments(bands, plate_stations_m, band_m))
+  for (const auto& [kind, of_kind] : compartments(bands, plate_stations_m))
     for (const auto& [k, middle] : of_kind) {
       const auto before = of_kind.find(k - 1), after = of_kind.find(k + 1);
       if (before == of_kind.end() || after == of_kind.end()) continue;

@@ -16,16 +16,17 @@ namespace tunnelmap {
 // One band of one kind of wall surface (a wall and its zone) and its plane landmark.
 struct WallBand {
   int kind = 0;
-  long band = 0;  // [band, band + 1) * band_m along the walk
+  double from_m = 0.0, to_m = 0.0;  // along the walk (core/mapping/wall_band_grid.h)
   int plane = 0;
 };
 
-// Per kind, each compartment's whole bands (one with a plate inside is two surfaces, not a
-// plane, and takes no part), at their mean station; every three neighbouring compartments
-// that have bands are tied to within `sigma_rad`. Compartments lie between the plates at
-// `plate_stations_m` (along the walk, as the bands); the stretches before the first and past
-// the last plate are open-ended and take no part.
+// Per kind, each compartment's whole bands, at their mean station (a band with a plate inside is
+// two surfaces, not a plane, and takes no part: the wall band grid cuts a band at its first
+// plate only); every three neighbouring compartments that have bands are tied to within
+// `sigma_rad`. Compartments lie between the plates at `plate_stations_m` (along the walk, as
+// the bands); the stretches before the first and past the last plate are open-ended and take
+// no part.
 std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
-                                         double band_m, double sigma_rad);
+                                         double sigma_rad);
 
 }  // namespace tunnelmap

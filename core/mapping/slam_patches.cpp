@@ -135,7 +135,7 @@ using BandKey = std::tuple<int, long, float>;  // (wall, band, inset)
 // sample on the layer its own position says (core/mapping/wall_zone_layers.h); which of them
 // is the outer surface the frame may misjudge.
 std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
+                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o, const WallBandGrid& grid) {
   std::vector<const WallSample*> kept;
   for (const WallSample& s : walls.samples) {
     if (s.wall >= 4 || !s.on_surface || s.point.z() > o.max_wall_depth_m) continue;
@@ -159,8 +159,7 @@ std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& wa
     for (std::size_t i = 0; i < insets.size(); ++i) {
       if (std::isnan(insets[i])) continue;
       const Eigen::Vector3d& p = samples[i].point;
-      const auto band = static_cast<long>(std::floor((camera_station_m + axis_cam.dot(p)) / o.band_m));
-      bands[{c, band, static_cast<float>(insets[i])}].add(p, on_wall[key][i]->points);
+      bands[{c, grid.band(camera_station_m + axis_cam.dot(p)), static_cast<float>(insets[i])}].add(p, on_wall[key][i]->points);
     }
   }
   return bands;
@@ -168,14 +167,10 @@ std::map<BandKey, Moments> wall_bands(const TunnelMap& map, const FrameWalls& wa
 
 }  // namespace
 
-std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
-  const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
-  const std::map<BandKey, Moments> bands = wall_bands(map, walls, camera_station_m, axis_cam, o);
-  std::map<int, Moments> plates;  // plane id
-  for (const WallSample& s : walls.samples)
-    // Kept or dropped whole, below: a cut per point biases it.
-    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
+std::vector<FramePatch> frame_wall_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                           const Eigen::Vector3d& axis_cam, const SlamOptions& o,
+                                           const WallBandGrid& grid) {
+  const std::map<BandKey, Moments> bands = wall_bands(map, walls, camera_station_m, axis_cam, o, grid);
   bool has_inner[4] = {false, false, false, false};
   for (const auto& [key, m] : bands)
     if (std::get<2>(key) > kMinZoneStepM && m.weight >= o.min_patch_points) has_inner[std::get<0>(key)] = true;
@@ -192,6 +187,17 @@ std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& wa
     patch.station_m = camera_station_m + axis_cam.dot(patch.centroid);
     out.push_back(patch);
   }
+  return out;
+}
+
+std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                            const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
+  const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
+  std::map<int, Moments> plates;  // plane id
+  for (const WallSample& s : walls.samples)
+    // Kept or dropped whole, below: a cut per point biases it.
+    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
+  std::vector<FramePatch> out;
   for (const auto& [plane, m] : plates) {
     FramePatch patch;
     if (!reduce(m, o, patch) || patch.centroid.z() > o.max_plate_depth_m) continue;

@@ -1,12 +1,13 @@
 #pragma once
 // What one frame contributes to localisation against the structure: its wall points cut into
-// bands along the girder (one patch per wall and band) and its plates across the girder (one
-// patch per plate), each reduced to the moments the pose graph needs.
+// bands along the girder (one patch per wall, band and zone) and its plates across the girder
+// (one patch per plate), each reduced to the moments the pose graph needs.
 #include <Eigen/Core>
 #include <vector>
 
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/slam_options.h"
+#include "core/mapping/wall_band_grid.h"
 #include "core/tunnel/tunnel_map.h"
 
 namespace tunnelmap {
@@ -14,7 +15,7 @@ namespace tunnelmap {
 struct FramePatch {
   bool plate = false;     // across the girder; else a wall band
   int wall = 0;           // 0-3 (WallClass) for a band
-  long band = 0;          // band index along the girder (walls)
+  long band = 0;          // band along the girder (walls; core/mapping/wall_band_grid.h)
   double station_m = 0.0; // the centroid's position along the girder (odometry)
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // camera frame
   Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();    // in-plane square-root scatter
@@ -29,12 +30,18 @@ struct FramePatch {
 };
 
 // `camera_station_m`: the camera's position along the girder; `axis_cam`: the girder's axis in
-// the camera frame, pointing forward. A wall's zones (edge band, middle plate) are patches of
-// their own: each is a layer of the wall's landmark (StructureSlam). A frame that found no
-// cross-section (`map.detected` false) chose its plates by its map's rough axis, not the
-// girder's: a plate of it is kept only when its own normal lies within kTransverseMaxAngleDeg
-// of `axis_cam`.
-std::vector<FramePatch> frame_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
-                                      const Eigen::Vector3d& axis_cam, const SlamOptions& options);
+// the camera frame, pointing forward.
+//
+// The frame's plates. A frame that found no cross-section (`map.detected` false) chose its
+// plates by its map's rough axis, not the girder's: a plate of it is kept only when its own
+// normal lies within kTransverseMaxAngleDeg of `axis_cam`.
+std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                            const Eigen::Vector3d& axis_cam, const SlamOptions& options);
+
+// The frame's walls, cut into the bands of `grid`. A wall's zones (edge band, middle plate) are
+// patches of their own: each is a layer of the wall's landmark (StructureSlam).
+std::vector<FramePatch> frame_wall_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
+                                           const Eigen::Vector3d& axis_cam, const SlamOptions& options,
+                                           const WallBandGrid& grid);
 
 }  // namespace tunnelmap

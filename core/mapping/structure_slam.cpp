@@ -56,7 +56,8 @@ Eigen::Vector3d oriented(const Eigen::Vector3d& axis, const Eigen::Vector3d& for
 }  // namespace
 
 StructureSlam::StructureSlam(SlamOptions options)
-    : options_(options), plates_({options.odometry_m_per_sqrt_m, kMinPlateReachM, options.plate_gate_m}) {}
+    : options_(options), plates_({options.odometry_m_per_sqrt_m, kMinPlateReachM, options.plate_gate_m}),
+      bands_(options.band_m, {}) {}
 
 void StructureSlam::start_group(const Eigen::Isometry3d& pose, int id) {
   Group g;
@@ -218,10 +219,9 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
   const int kind = patch.wall * 2 + (patch.zone == FramePatch::Zone::Inner ? 1 : 0);
   const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point, patch.station_m});
   if (!added) return;
-  const long max_gap = static_cast<long>(std::floor(options_.max_continuity_gap_m / options_.band_m));
   // The point between the two, held by the current pose so that it moves with the map.
   auto tie = [&](const ZoneLayer& other, long other_band) {
-    if (other.plane == plane || !plate_between(other_band, patch.band)) return;
+    if (other.plane == plane || !bands_.plate_between(other_band, patch.band)) return;
     const Eigen::Isometry3d& pose = graph_.poses.back();
     const Eigen::Vector3d between = pose.inverse() * wall_at_plate(other, ZoneLayer{plane, point, patch.station_m});
     // A side wall's normal along the world's up is the sine of the girder's cross-fall: the
@@ -234,12 +234,16 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
     graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between,
                                    options_.wall_continuity_m, up, side_wall ? options_.wall_turn_rad : 0.0});
   };
+  auto near = [&](long other_band) {  // the unseen stretch between the two bands
+    const long first = std::min(other_band, patch.band), last = std::max(other_band, patch.band);
+    return bands_.from_m(last) - bands_.to_m(first) <= options_.max_continuity_gap_m;
+  };
   if (it != zone_layers_.begin()) {
     const auto below = std::prev(it);
-    if (below->first.first == kind && patch.band - below->first.second <= max_gap) tie(below->second, below->first.second);
+    if (below->first.first == kind && near(below->first.second)) tie(below->second, below->first.second);
   }
   const auto above = std::next(it);
-  if (above != zone_layers_.end() && above->first.first == kind && above->first.second - patch.band <= max_gap)
+  if (above != zone_layers_.end() && above->first.first == kind && near(above->first.second))
     tie(above->second, above->first.second);
 }
 
@@ -247,10 +251,24 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
 std::vector<PlaneBend> StructureSlam::turn_ties() const {
   if (!(options_.compartment_turn_rad > 0.0)) return {};
   std::vector<WallBand> bands;
-  for (const auto& [key, layer] : zone_layers_) bands.push_back({key.first, key.second, layer.plane});
-  std::vector<double> plates;
-  for (int i = 0; i < plates_.size(); ++i) plates.push_back(plates_.station_m(i));
-  return compartment_bends(bands, plates, options_.band_m, options_.compartment_turn_rad);
+  for (const auto& [key, layer] : zone_layers_)
+    bands.push_back({key.first, bands_.from_m(key.second), bands_.to_m(key.second), layer.plane});
+  return compartment_bends(bands, cuts_m_, options_.compartment_turn_rad);
+}
+
+// Each plate cuts the cell it was first seen in, where the plate is now estimated to lie (kept
+// within that cell): the bands' keys keep their meaning while the estimate moves by
+// centimetres, and the cut follows the estimate, which the nearer views make better.
+void StructureSlam::cut_bands_at_plates() {
+  for (int i = static_cast<int>(cut_cells_.size()); i < plates_.size(); ++i)
+    cut_cells_.push_back(static_cast<long>(std::floor(plates_.station_m(i) / options_.band_m)));
+  cuts_m_.clear();
+  for (int i = 0; i < plates_.size(); ++i) {
+    const double lo = static_cast<double>(cut_cells_[static_cast<std::size_t>(i)]) * options_.band_m;
+    const double hi = std::nextafter(lo + options_.band_m, lo);
+    cuts_m_.push_back(std::clamp(plates_.station_m(i), lo, hi));
+  }
+  bands_ = WallBandGrid(options_.band_m, cuts_m_);
 }
 
 // Where two stretches of a wall either side of a plate meet: on the line between their points,
@@ -264,13 +282,6 @@ Eigen::Vector3d StructureSlam::wall_at_plate(const ZoneLayer& a, const ZoneLayer
   if (std::isnan(plate) || !(hi - lo > 0.0)) return 0.5 * (a.point + b.point);
   const double t = (plate - a.station_m) / (b.station_m - a.station_m);
   return a.point + t * (b.point - a.point);
-}
-
-// A plate the walk has seen lies between bands `a` and `b` of a wall.
-bool StructureSlam::plate_between(long a, long b) const {
-  const double lo = (std::min(a, b) + 1) * options_.band_m;
-  const double hi = std::max(a, b) * options_.band_m;
-  return plates_.any_within(lo - 0.5 * options_.band_m, hi + 0.5 * options_.band_m);
 }
 
 void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {
@@ -290,8 +301,15 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   }
   const Eigen::Vector3d axis_cam = frame_odometry.linear().transpose() * axis_world;
   const double camera_station = g.station_m + g.axis.dot(frame_odometry.translation() - g.odometry.translation());
-  const std::vector<FramePatch> patches = frame_patches(map, walls, camera_station, axis_cam, options_);
-  std::vector<int> planes(patches.size(), -1);
+  // Plates first: a wall band is cut at a plate inside it, this frame's own new plates too.
+  std::vector<FramePatch> patches = frame_plate_patches(map, walls, camera_station, axis_cam, options_);
+  std::vector<int> planes;
+  for (const FramePatch& plate : patches) planes.push_back(plate_landmark(plate, frame_to_world, camera_station));
+  cut_bands_at_plates();
+  for (const FramePatch& wall : frame_wall_patches(map, walls, camera_station, axis_cam, options_, bands_)) {
+    patches.push_back(wall);
+    planes.push_back(-1);
+  }
   for (int pair = 0; pair < 4; pair += 2) {  // left and right, top and bottom
     std::vector<const FramePatch*> on_wall;
     std::vector<std::size_t> index;
@@ -302,7 +320,7 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
   }
   for (std::size_t k = 0; k < patches.size(); ++k) {
     const FramePatch& patch = patches[k];
-    const int plane = patch.plate ? plate_landmark(patch, frame_to_world, camera_station) : planes[k];
+    const int plane = planes[k];
     PlanePatch p;
     p.pose = pose;
     p.plane = plane;

@@ -2,7 +2,8 @@
 // Localisation and mapping against the girder's structure: one pose graph (core/solvers) over
 // the pose groups of a posed sequence, with odometry factors between consecutive groups and
 // plane landmarks for what the camera sees of the structure: each wall, one plane per band of
-// the girder's length, and each plate across it (diaphragm, step face, end wall).
+// the girder's length (cut at the plates: core/mapping/wall_band_grid.h), and each plate across
+// it (diaphragm, step face, end wall).
 //
 // Landmarks are told apart by their position along the girder as the odometry measures it
 // (arc length of the walk): over the few metres in which one plate is seen, odometry drifts by
@@ -24,6 +25,7 @@
 #include "core/mapping/pose_refinement.h"
 #include "core/mapping/slam_options.h"
 #include "core/mapping/slam_patches.h"
+#include "core/mapping/wall_band_grid.h"
 #include "core/solvers/pose_graph.h"
 #include "core/tunnel/tunnel_map.h"
 
@@ -92,9 +94,13 @@ class StructureSlam {
   ZoneLayers zone_layers_;
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
   std::vector<PlaneBend> turn_ties() const;
-  bool plate_between(long a, long b) const;
   Eigen::Vector3d wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const;
   PlateTracks plates_;
+  // The wall bands, cut at the plates (core/mapping/wall_band_grid.h).
+  void cut_bands_at_plates();
+  std::vector<long> cut_cells_;  // per plate: the cell of the band it cuts
+  std::vector<double> cuts_m_;   // per plate: where it cuts
+  WallBandGrid bands_;
   void share_systematic_error(int pose, int plane, double sigma_m);
   struct SharedView {
     int frames = 0, last_frame = -1;

@@ -136,5 +136,33 @@ TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesAB
   EXPECT_EQ(testing::run_cli("evaluate --protocol girders --count 0 --out " + tmp.file("x")).exit_code, 2);
 }
 
+TEST(GirderProtocol, TheCliDrawsAFamilyOfTightCurvesWithExactPosesWhenAsked) {
+  IoTempDir tmp;
+  const auto run = testing::run_cli("evaluate --protocol girders --count 2 --seed 5 --min-length 6 --max-length 6 "
+                                    "--curved-fraction 1 --drifted-fraction 0 --min-radius 150 --max-radius 150 -q "
+                                    "--out " + tmp.file("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+  EXPECT_EQ(j["ranges"]["curved_fraction"].get<double>(), 1.0);
+  EXPECT_EQ(j["ranges"]["drifted_fraction"].get<double>(), 0.0);
+  EXPECT_EQ(j["ranges"]["radius_m"], nlohmann::json::array({150.0, 150.0}));
+  ASSERT_EQ(j["girders"].size(), 2u);
+  for (const auto& g : j["girders"]) {
+    EXPECT_FALSE(g["drifted"].get<bool>());
+    EXPECT_NE(g["summary"].get<std::string>().find("150 m,"), std::string::npos) << g["summary"];
+  }
+  const auto bad = testing::run_cli("evaluate --protocol girders --curved-fraction 1.5 --out " + tmp.file("x"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--curved-fraction must be in [0, 1]"), std::string::npos) << bad.err;
+  const auto crossed = testing::run_cli("evaluate --protocol girders --min-radius 400 --max-radius 300 --out " + tmp.file("x"));
+  EXPECT_EQ(crossed.exit_code, 2);
+  EXPECT_NE(crossed.err.find("--max-radius must not be below --min-radius"), std::string::npos) << crossed.err;
+  const auto tight = testing::run_cli("evaluate --protocol girders --max-radius 20 --out " + tmp.file("x"));
+  EXPECT_EQ(tight.exit_code, 2);
+  EXPECT_NE(tight.err.find("within [50, 100000] m"), std::string::npos) << tight.err;
+  EXPECT_EQ(testing::run_cli("evaluate --protocol girders --drifted-fraction -0.1 --out " + tmp.file("x")).exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("x")));
+}
+
 }  // namespace
 }  // namespace tunnelmap

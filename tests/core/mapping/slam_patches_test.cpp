@@ -1,6 +1,7 @@
 // What one frame contributes to the pose graph: a plate's weight against the depth's
 // quantisation, with and without the noise that dithers it; a frame without a cross-section's
-// plates; a wall's zones, apart, whatever planes the segmentation grew over them.
+// plates; a wall's zones, apart, whatever planes the segmentation grew over them; a wall band
+// cut at the plate where the wall kinks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,8 @@
 
 namespace tunnelmap {
 namespace {
+
+const WallBandGrid kOneMetreBands(1.0, {});
 
 // A structured-light camera's disparity: fx 570.3 px, baseline 75 mm, 1/8 pixel steps
 // (2.9 mm at 1 m, 59 mm at 4.5 m), as slam.depth_step_mm assumes.
@@ -39,7 +42,7 @@ FrameWalls plate_at(double depth, double sigma_at_1m, std::mt19937& rng) {
 
 FramePatch plate_patch(const FrameWalls& walls) {
   const std::vector<FramePatch> patches =
-      frame_patches(TunnelMap(), walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions());
+      frame_plate_patches(TunnelMap(), walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions());
   EXPECT_EQ(patches.size(), 1u);
   return patches.empty() ? FramePatch() : patches.front();
 }
@@ -53,12 +56,12 @@ TEST(SlamPatches, AFrameWithoutACrossSectionKeepsOnlyPlatesAcrossTheGirdersAxis)
   const Eigen::Vector3d near_axis(std::sin(10.0 * M_PI / 180.0), 0.0, std::cos(10.0 * M_PI / 180.0));
   const TunnelMap undetected;
   ASSERT_FALSE(undetected.detected);
-  EXPECT_TRUE(frame_patches(undetected, walls, 0.0, tilted_axis, SlamOptions()).empty());
-  EXPECT_EQ(frame_patches(undetected, walls, 0.0, near_axis, SlamOptions()).size(), 1u);
+  EXPECT_TRUE(frame_plate_patches(undetected, walls, 0.0, tilted_axis, SlamOptions()).empty());
+  EXPECT_EQ(frame_plate_patches(undetected, walls, 0.0, near_axis, SlamOptions()).size(), 1u);
   // A frame's own detection chose them by its own axis: kept as it gives them.
   TunnelMap detected;
   detected.detected = true;
-  EXPECT_EQ(frame_patches(detected, walls, 0.0, tilted_axis, SlamOptions()).size(), 1u);
+  EXPECT_EQ(frame_plate_patches(detected, walls, 0.0, tilted_axis, SlamOptions()).size(), 1u);
 }
 
 TEST(SlamPatches, APlateOnOneDepthStepKeepsThatStepsError) {
@@ -119,7 +122,7 @@ TEST(SlamPatches, AWallsZonesStayApartWhereTheSegmentationMergedThem) {
   TunnelMap map;
   const FrameWalls walls = merged_zones(map);
   int middle = 0, edge = 0;
-  for (const FramePatch& p : frame_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions())) {
+  for (const FramePatch& p : frame_wall_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), kOneMetreBands)) {
     ASSERT_FALSE(p.plate);
     const bool inner = p.zone == FramePatch::Zone::Inner;
     (inner ? middle : edge) += 1;
@@ -139,8 +142,8 @@ TEST(SlamPatches, PartsOfAFrameWhoseWallDoesNotStepAreOneWall) {
   const FrameWalls whole = merged_zones(map);
   FrameWalls split = whole;
   for (WallSample& s : split.samples) s.part = s.point.z() >= 2.0f ? 1 : 0;
-  const std::vector<FramePatch> a = frame_patches(map, whole, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions());
-  const std::vector<FramePatch> b = frame_patches(map, split, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions());
+  const std::vector<FramePatch> a = frame_wall_patches(map, whole, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), kOneMetreBands);
+  const std::vector<FramePatch> b = frame_wall_patches(map, split, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), kOneMetreBands);
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k].points, b[k].points);
@@ -169,7 +172,7 @@ TEST(SlamPatches, EachCrossSectionsWallHasItsOwnZones) {
       walls.samples.push_back(s);
     }
   int patches = 0, points = 0;
-  for (const FramePatch& p : frame_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions())) {
+  for (const FramePatch& p : frame_wall_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), kOneMetreBands)) {
     const bool inner = p.zone == FramePatch::Zone::Inner, beyond = p.centroid.z() >= 2.0;
     EXPECT_NEAR(p.centroid.x(), (inner ? 0.414 : 0.42) - (beyond ? 0.02 : 0.0), 1e-4) << p.band;
     ++patches;
@@ -177,6 +180,54 @@ TEST(SlamPatches, EachCrossSectionsWallHasItsOwnZones) {
   }
   EXPECT_EQ(patches, 8);  // bands 0-3, two zones each
   EXPECT_EQ(points, 64 * static_cast<int>(walls.samples.size()));
+}
+
+// The right wall of a chorded girder on a curve, seen along it: straight to the plate at 2.4 m,
+// then turned 1.5 degrees (a 150 m radius, plates 4 m apart).
+FrameWalls wall_kinked_at(double plate_m, double kink_deg, TunnelMap& map) {
+  map.walls[1].normal = -Eigen::Vector3d::UnitX();
+  map.walls[1].offset_m = 0.42;
+  FrameWalls walls;
+  const double slope = std::tan(kink_deg * M_PI / 180.0);
+  for (double z = 0.6; z <= 3.6; z += 0.02)
+    for (double y = -0.4; y <= 0.4; y += 0.04) {
+      WallSample s;
+      s.point = Eigen::Vector3f(static_cast<float>(0.42 + std::max(0.0, z - plate_m) * slope), static_cast<float>(y),
+                                static_cast<float>(z));
+      s.points = 64;
+      s.wall = 1;
+      s.plane = 1;
+      walls.samples.push_back(s);
+    }
+  return walls;
+}
+
+double tilt_deg(const FramePatch& p) {  // of the patch's plane about the camera's y, from the wall's
+  const Eigen::Vector3d normal = p.spread.col(0).cross(p.spread.col(1)).normalized();
+  return std::atan2(-normal.z(), std::abs(normal.x())) * 180.0 / M_PI * (normal.x() < 0 ? -1.0 : 1.0);
+}
+
+TEST(SlamPatches, AWallBandIsCutAtThePlateWhereTheWallKinks) {
+  TunnelMap map;
+  const FrameWalls walls = wall_kinked_at(2.4, 1.5, map);
+  const WallBandGrid cut(1.0, {2.4});
+  int before = 0, past = 0;
+  for (const FramePatch& p : frame_wall_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), cut)) {
+    const bool is_past = cut.from_m(p.band) >= 2.4;
+    (is_past ? past : before) += 1;
+    EXPECT_NEAR(std::abs(tilt_deg(p)), is_past ? 1.5 : 0.0, 0.01) << cut.from_m(p.band);
+  }
+  EXPECT_EQ(before, 2);  // 0.6-1, 1-2.4 (2-2.4 alone would be short)
+  EXPECT_EQ(past, 2);    // 2.4-3, 3-3.6
+  // Uncut, the band from 2 to 3 m is one plane over both: it leans by about half the kink.
+  const WallBandGrid uncut(1.0, {});
+  bool straddles = false;
+  for (const FramePatch& p : frame_wall_patches(map, walls, 0.0, Eigen::Vector3d::UnitZ(), SlamOptions(), uncut))
+    if (uncut.from_m(p.band) == 2.0) {
+      straddles = true;
+      EXPECT_GT(std::abs(tilt_deg(p)), 0.5);
+    }
+  EXPECT_TRUE(straddles);
 }
 
 }  // namespace
