@@ -120,13 +120,13 @@ struct SlamOptions {
   // Odometry of pose groups that did not move still has this much uncertainty.
   double min_odometry_m = 0.0005;
   double min_odometry_deg = 0.01;
-  int min_patch_points = 200;
+  int min_patch_points = 200;  // fewer points in a band or plate say little
   // A wall's zones are layers of its landmark: a patch within `layer_tolerance_m` of a layer
   // (after the frame's shift along the wall's normal, at most `max_layer_shift_m` and changing
   // by at most `max_layer_slope` per metre) is that layer.
   double layer_tolerance_m = 0.003;
   double max_layer_shift_m = 0.05;
-  double max_layer_slope = 0.02;  // shift per metre along the girder (a heading error of ~1 deg)  // fewer points in a band or plate say little
+  double max_layer_slope = 0.02;  // shift per metre along the girder (a heading error of ~1 deg)
   // A direction whose landmark information is below this fraction of the strongest is
   // left to odometry (reported as degenerate).
   double degenerate_ratio = 1e-4;

@@ -216,6 +216,25 @@ TEST(PoseGraph, WallsAndPlatesTakeOutTheDriftAcrossTheAxisAndAlongIt) {
               worst.x(), worst.y(), worst.z(), worst_deg, drift_mm, drift_deg);
 }
 
+TEST(PoseGraph, APlaneOneCameraSeesAsAStripNeitherMovesThePosesNorHoldsTheSolveBack) {
+  // A strip of a plate (points on one line) seen by one camera turns freely about the line;
+  // it cannot tell any pose anything, and the solve must still converge to the same poses.
+  Walk w = make_walk(true);
+  add_drifting_odometry(w, 10.0, 0.2, 7);
+  const PoseGraphSolution without = solve_pose_graph(w.graph);
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY();
+  const int strip = static_cast<int>(w.graph.planes.size());
+  w.graph.planes.push_back({Eigen::AngleAxisd(5.0 * M_PI / 180.0, Y) * X, 8.3});
+  w.graph.patches.push_back(patch_of(w.truth[20], 20, strip, Eigen::Vector3d(8.0, 0, 0), Y, Eigen::Vector3d::UnitZ(), -0.4, 0.4, 0.6, 0.6));
+  const PoseGraphSolution with = solve_pose_graph(w.graph);
+  EXPECT_TRUE(with.converged);
+  for (std::size_t i = 0; i < w.truth.size(); ++i)
+    EXPECT_LT((with.poses[i].translation() - without.poses[i].translation()).norm(), 1e-5) << i;
+  // The strip's plane passes through the strip, wherever it turned about it.
+  const Eigen::Vector3d on_strip = with.poses[20] * w.graph.patches.back().centroid;
+  EXPECT_NEAR(with.planes[static_cast<std::size_t>(strip)].normal.dot(on_strip), with.planes[static_cast<std::size_t>(strip)].offset, 1e-4);
+}
+
 TEST(PoseGraph, WithoutPlatesTheAxisIsLeftToOdometryAndReportedDegenerate) {
   Walk w = make_walk(false);
   add_drifting_odometry(w, 10.0, 0.0, 3);
