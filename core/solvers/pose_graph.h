@@ -81,6 +81,8 @@ struct PoseGraphSolution {
   std::vector<GraphPlane> planes;
   bool converged = false;
   int iterations = 0;
+  // Costs of the whole graph; the part of the planes only one pose sees is taken at the
+  // solved poses (core/solvers/pose_graph.cpp).
   double initial_cost = 0.0, final_cost = 0.0;
 };
 
