@@ -227,11 +227,11 @@ std::vector<PlaneBlock> plane_blocks(const PoseGraph& graph) {
   }
   std::vector<bool> anchored(planes.size(), false);
   for (const PlanePatch& p : graph.patches) {
-    const auto k = static_cast<std::size_t>(p.plane);
-    if (anchored[k]) continue;
-    anchored[k] = true;
-    planes[k].anchor = graph.poses[static_cast<std::size_t>(p.pose)] * p.centroid;
-    planes[k].d[0] = graph.planes[k].offset - graph.planes[k].normal.normalized().dot(planes[k].anchor);
+    PlaneBlock& plane = planes[static_cast<std::size_t>(p.plane)];
+    if (anchored[static_cast<std::size_t>(p.plane)]) continue;
+    anchored[static_cast<std::size_t>(p.plane)] = true;
+    plane.anchor = graph.poses[static_cast<std::size_t>(p.pose)] * p.centroid;
+    plane.d[0] -= Eigen::Vector3d(plane.n[0], plane.n[1], plane.n[2]).dot(plane.anchor);
   }
   return planes;
 }
