@@ -39,6 +39,7 @@ struct EvaluateOptions {
   int count = 30;
   std::optional<double> min_length, max_length;
   std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius;
+  std::optional<double> transition_fraction, vertical_curve_fraction;
   bool no_pose_refinement = false;
   bool check = false;
   bool quiet = false;
@@ -89,7 +90,8 @@ std::string protocol_text(const EvaluateOptions& o, const ProtocolOptions& p) {
   return s.str();
 }
 
-// --curved-fraction, --drifted-fraction, --min-radius, --max-radius into the family's ranges.
+// --curved-fraction, --transition-fraction, --vertical-curve-fraction, --drifted-fraction,
+// --min-radius, --max-radius into the family's ranges.
 void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
   auto fraction = [](const std::optional<double>& value, const char* flag, double& into) {
     if (!value) return;
@@ -97,6 +99,8 @@ void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
     into = *value;
   };
   fraction(o.curved_fraction, "--curved-fraction", r.curved_fraction);
+  fraction(o.transition_fraction, "--transition-fraction", r.transition_fraction);
+  fraction(o.vertical_curve_fraction, "--vertical-curve-fraction", r.vertical_curve_fraction);
   fraction(o.drifted_fraction, "--drifted-fraction", r.drifted_fraction);
   if (o.min_radius && o.max_radius && !(*o.max_radius >= *o.min_radius))
     throw ParameterError("evaluate: --max-radius must not be below --min-radius");
@@ -259,6 +263,8 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--min-length", o.min_length, "Shortest girder drawn, metres (default 30)");
   cmd->add_option("--max-length", o.max_length, "Longest girder drawn, metres (default 40)");
   cmd->add_option("--curved-fraction", o.curved_fraction, "Share of girders drawn on a horizontal curve with gradient and cross-fall, 0-1 (default 0.3)");
+  cmd->add_option("--transition-fraction", o.transition_fraction, "Share of the curved girders that run straight and then into their curve along a transition curve inside the girder, 0-1 (default 0)");
+  cmd->add_option("--vertical-curve-fraction", o.vertical_curve_fraction, "Share of the curved girders on a vertical curve (a crest or a sag: the gradient changes along the girder), 0-1 (default 0)");
   cmd->add_option("--drifted-fraction", o.drifted_fraction, "Share of walks whose poses drift, 0-1 (default 0.5)");
   cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");
   cmd->add_option("--max-radius", o.max_radius, "Widest curve radius drawn, metres (default 1000)");

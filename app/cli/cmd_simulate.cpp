@@ -32,6 +32,8 @@ struct SimulateOptions {
   std::optional<double> sections_start;
   std::optional<std::string> drift;  // MM,DEG per sqrt(m)
   std::optional<double> girder, diaphragm_spacing, curve_radius, gradient_pct, cross_fall_deg;
+  std::optional<std::string> transition;  // START,LENGTH
+  std::optional<double> vertical_radius;
   std::optional<std::string> manhole;  // SHAPE,W,H,CENTRE_Z_REL[,CORNER_R]
   std::optional<std::string> stiffeners, stiffener_size;  // WALL:POS,...; H,T
   bool quiet = false;
@@ -153,6 +155,19 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
   if (o.curve_radius) c.curve_radius_m = *o.curve_radius;
   if (o.gradient_pct) c.gradient_pct = *o.gradient_pct;
   if (o.cross_fall_deg) c.cross_fall_deg = *o.cross_fall_deg;
+  if (o.transition) {
+    if (c.curve_radius_m == 0.0) refuse("--transition needs --curve-radius");
+    const std::vector<double> v = parse_sim_numbers("--transition", *o.transition, 2, "START,LENGTH");
+    check("--transition", "START", v[0], -1000.0, 10000.0);
+    check("--transition", "LENGTH", v[1], 0.0, 1000.0);
+    c.transition_start_m = v[0];
+    c.transition_m = v[1];
+  }
+  if (o.vertical_radius && *o.vertical_radius != 0.0 &&
+      !(std::abs(*o.vertical_radius) >= 200.0 && std::abs(*o.vertical_radius) <= 1e6))
+    refuse("--vertical-radius " + std::to_string(*o.vertical_radius) +
+           " must be 0 (constant gradient) or between 200 and 1000000 m in size (sign: + sag, - crest)");
+  if (o.vertical_radius) c.vertical_radius_m = *o.vertical_radius;
   if (o.walk_pose && !o.walk && !o.girder) refuse("--walk-pose needs --walk");
   if (!o.walk && o.girder) {
     // The whole girder, one stop per frame, through every manhole.
@@ -315,6 +330,12 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Longitudinal gradient in percent (> 0 rises along the girder; -10..10)");
   sub->add_option("--cross-fall-deg", opt->cross_fall_deg,
                   "Cross-fall: roll of the cross-section in degrees (> 0 lifts the left wall; -10..10)");
+  sub->add_option("--transition", opt->transition,
+                  "Transition curve START,LENGTH (metres): straight up to station START, then the "
+                  "curvature grows evenly over LENGTH to that of --curve-radius");
+  sub->add_option("--vertical-radius", opt->vertical_radius,
+                  "Vertical curve radius in metres (0 = constant gradient, > 0 sag, < 0 crest; "
+                  "|R| >= 200): the gradient changes by 1/R per metre from --gradient-pct at station 0");
   sub->add_option("--format", opt->format,
                   "Output layout: dataset (dataset.json, default) or tum (TUM RGB-D: depth.txt, "
                   "rgb.txt, groundtruth.txt)")

@@ -46,10 +46,30 @@ void draw_manhole(Draw& d, double width, double height, SimConfig& c) {
   c.manhole_centre_z_rel = d.uniform(0.42, 0.55);
 }
 
+// A transition curve and a vertical curve for a curved girder (GirderRanges): the straight
+// ends 10-60 % along the girder, and the gradient stays within the range over its length.
+void draw_alignment_changes(Draw& d, const GirderRanges& r, double length, SimConfig& c) {
+  if (d.chance(r.transition_fraction)) {
+    c.transition_start_m = d.uniform(0.1, 0.6) * length;
+    c.transition_m = d.uniform(r.min_transition_m, r.max_transition_m);
+  }
+  if (d.chance(r.vertical_curve_fraction)) {
+    const double radius = d.uniform(r.min_vertical_radius_m, r.max_vertical_radius_m);
+    const double change_pct = 100.0 * length / radius;
+    const double g0 = std::clamp(c.gradient_pct, -r.max_gradient_pct, r.max_gradient_pct);
+    // Rise or fall, whichever keeps the gradient in range (both, when the range allows).
+    const bool can_sag = g0 + change_pct <= r.max_gradient_pct;
+    const bool can_crest = g0 - change_pct >= -r.max_gradient_pct;
+    const bool sag = can_sag && (!can_crest || d.chance(0.5));
+    if (can_sag || can_crest) c.vertical_radius_m = sag ? radius : -radius;
+  }
+}
+
 }  // namespace
 
 std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRanges& r) {
   Draw d(seed);
+  Draw alignment_changes(seed ^ 0x5bd1e995u);
   std::vector<GirderDraw> out;
   for (int i = 0; i < count; ++i) {
     GirderDraw g;
@@ -72,6 +92,7 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
       c.curve_radius_m = (d.chance(0.5) ? 1 : -1) * d.uniform(r.min_radius_m, r.max_radius_m);
       c.gradient_pct = d.uniform(-r.max_gradient_pct, r.max_gradient_pct);
       c.cross_fall_deg = d.uniform(-r.max_cross_fall_deg, r.max_cross_fall_deg);
+      draw_alignment_changes(alignment_changes, r, length, c);
     }
     c.noise_model = d.chance(0.7) ? "structured_light" : "tof";
     c.noise_scale = d.uniform(0.7, 1.3);
@@ -89,11 +110,20 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
     walk.through_openings = true;
     c.walk = walk;
     c.frames = walk.stops * r.frames_per_stop;
-    char buf[200];
+    std::string alignment;
+    if (curved) {
+      alignment = "R " + std::to_string(std::lround(c.curve_radius_m)) + " m, ";
+      if (c.transition_m > 0.0)
+        alignment += "straight to " + std::to_string(std::lround(c.transition_start_m)) + " m, transition " +
+                     std::to_string(std::lround(c.transition_m)) + " m, ";
+      if (c.vertical_radius_m != 0.0)
+        alignment += "vertical R " + std::to_string(std::lround(c.vertical_radius_m)) + " m, ";
+    }
+    char buf[300];
     std::snprintf(buf, sizeof buf, "%.1f m, %.3f x %.3f m%s, plates every %.2f m, %s %.2f x %.2f m, %s%s",
                   length, width, height, g.constant_section ? "" : " (sections)",
                   c.diaphragm_spacing_m, c.manhole_shape.c_str(), c.manhole_width_m,
-                  c.manhole_height_m, curved ? ("R " + std::to_string(std::lround(c.curve_radius_m)) + " m, ").c_str() : "",
+                  c.manhole_height_m, alignment.c_str(),
                   g.drifted ? "drift" : "exact poses");
     g.summary = buf;
     out.push_back(std::move(g));

@@ -1,6 +1,7 @@
 #include "core/mapping/compartment_bends.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 namespace tunnelmap {
@@ -28,6 +29,17 @@ std::map<int, std::map<int, Compartment>> compartments(const std::vector<WallBan
   return out;
 }
 
+// Lagrange weights of the quadratic through `at` (three stations) at station `s`.
+std::array<double, 3> quadratic_weights(const std::array<double, 3>& at, double s) {
+  std::array<double, 3> w{};
+  for (int i = 0; i < 3; ++i) {
+    w[i] = 1.0;
+    for (int j = 0; j < 3; ++j)
+      if (j != i) w[i] *= (s - at[j]) / (at[i] - at[j]);
+  }
+  return w;
+}
+
 }  // namespace
 
 std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
@@ -35,12 +47,14 @@ std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std
   std::sort(plate_stations_m.begin(), plate_stations_m.end());
   std::vector<PlaneBend> out;
   for (const auto& [kind, of_kind] : compartments(bands, plate_stations_m))
-    for (const auto& [k, middle] : of_kind) {
-      const auto before = of_kind.find(k - 1), after = of_kind.find(k + 1);
-      if (before == of_kind.end() || after == of_kind.end()) continue;
-      const double s_a = before->second.station_m(), s_b = middle.station_m(), s_c = after->second.station_m();
-      const double weight_c = (s_b - s_a) / (s_c - s_a);
-      out.push_back({before->second.planes, middle.planes, after->second.planes, 1.0 - weight_c, weight_c, sigma_rad});
+    for (const auto& [k, second] : of_kind) {
+      const auto first = of_kind.find(k - 1), third = of_kind.find(k + 1), fourth = of_kind.find(k + 2);
+      if (first == of_kind.end() || third == of_kind.end() || fourth == of_kind.end()) continue;
+      const std::array<double, 3> w = quadratic_weights(
+          {first->second.station_m(), third->second.station_m(), fourth->second.station_m()}, second.station_m());
+      out.push_back({{first->second.planes, second.planes, third->second.planes, fourth->second.planes},
+                     {-w[0], 1.0, -w[1], -w[2]},
+                     sigma_rad});
     }
   return out;
 }

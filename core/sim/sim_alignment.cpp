@@ -10,17 +10,21 @@ namespace tunnelmap::sim {
 namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kMaxCompartment = 4.0;  // longest chord between joints, metres
+constexpr double kClothoidStep = 0.25;   // Simpson step along a transition curve, metres
 }  // namespace
 
 SimAlignment::SimAlignment(const SimConfig& c, std::vector<double> joints, double lo, double hi) {
-  straight_ = c.curve_radius_m == 0.0 && c.gradient_pct == 0.0 && c.cross_fall_deg == 0.0;
+  straight_ = !c.curved();
   if (straight_) {
     frames_ = {Eigen::Isometry3d::Identity()};
     inverse_ = frames_;
     return;
   }
-  radius_ = c.curve_radius_m;
+  curvature_ = c.curve_radius_m == 0.0 ? 0.0 : 1.0 / c.curve_radius_m;
+  transition_ = c.transition_m;
+  transition_start_ = c.transition_start_m;
   gradient_ = c.gradient_pct / 100.0;
+  vertical_curvature_ = c.vertical_radius_m == 0.0 ? 0.0 : 1.0 / c.vertical_radius_m;
   zc_ = 0.5 * SimSections(c).at(0.0).height_m;
 
   // Joint stations: the plates, station 0 and lo/hi, with more so no chord exceeds 4 m.
@@ -81,21 +85,49 @@ SimAlignment::SimAlignment(const SimConfig& c, std::vector<double> joints, doubl
   }
 }
 
+double SimAlignment::heading(double h) const {
+  if (transition_ <= 0.0) return curvature_ * h;
+  const double u = std::clamp(h - transition_start_, 0.0, transition_);
+  return curvature_ * (0.5 * u * u / transition_ + std::max(0.0, h - transition_start_ - transition_));
+}
+
+Eigen::Vector2d SimAlignment::plan(double h) const {
+  // Straight, then the clothoid (integrated numerically: no closed form), then the arc.
+  auto arc = [&](const Eigen::Vector2d& from, double h0, double length) -> Eigen::Vector2d {
+    const double t0 = heading(h0), k = curvature_;
+    if (std::abs(k * length) < 1e-12) return from + length * Eigen::Vector2d(std::cos(t0), std::sin(t0));
+    return from + Eigen::Vector2d(std::sin(t0 + k * length) - std::sin(t0), std::cos(t0) - std::cos(t0 + k * length)) / k;
+  };
+  if (transition_ <= 0.0) return arc(Eigen::Vector2d::Zero(), 0.0, h);
+  const double h0 = transition_start_, h1 = transition_start_ + transition_;
+  if (h <= h0) return {h, 0.0};
+  const double u = std::min(h, h1) - h0;
+  const int n = 2 * std::max(1, static_cast<int>(std::ceil(u / kClothoidStep)));  // Simpson: even
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (int i = 0; i <= n; ++i) {
+    const double t = heading(h0 + u * i / n);
+    const double w = (i == 0 || i == n) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+    sum += w * Eigen::Vector2d(std::cos(t), std::sin(t));
+  }
+  const Eigen::Vector2d end = Eigen::Vector2d(h0, 0.0) + sum * (u / n / 3.0);
+  return h <= h1 ? end : arc(end, h1, h - h1);
+}
+
 Eigen::Vector3d SimAlignment::curve(double h) const {
-  if (radius_ == 0.0) return {h, 0.0, zc_ + gradient_ * h};
-  return {radius_ * std::sin(h / radius_), radius_ * (1.0 - std::cos(h / radius_)),
-          zc_ + gradient_ * h};
+  const Eigen::Vector2d p = plan(h);
+  return {p.x(), p.y(), zc_ + gradient_ * h + 0.5 * vertical_curvature_ * h * h};
 }
 
 Eigen::Vector3d SimAlignment::curve_dir(double h) const {
-  if (radius_ == 0.0) return {1.0, 0.0, gradient_};
-  return {std::cos(h / radius_), std::sin(h / radius_), gradient_};
+  const double t = heading(h);
+  return {std::cos(t), std::sin(t), gradient_ + vertical_curvature_ * h};
 }
 
 double SimAlignment::chord_to(double h_a, double length, double sign) const {
   // Newton on |curve(h) - curve(h_a)| = length, from the straight-line guess.
   const Eigen::Vector3d a = curve(h_a);
-  double h = h_a + sign * length / std::sqrt(1.0 + gradient_ * gradient_);
+  const double slope = gradient_ + vertical_curvature_ * h_a;
+  double h = h_a + sign * length / std::sqrt(1.0 + slope * slope);
   for (int it = 0; it < 30; ++it) {
     const Eigen::Vector3d d = curve(h) - a;
     const double f = d.norm() - length;

@@ -3,11 +3,13 @@
 // The geometry is built in *local* coordinates (x = station along the girder, y to the left,
 // z up from the floor), as the straight tunnel always was. A straight girder (no curve,
 // gradient or cross-fall) has local = world. Otherwise the girder is a chain of straight
-// compartments, as fabricated: the alignment (a horizontal circle of radius R, rising at a
-// constant gradient, through the point (0, 0, zc) heading +X; zc = half the height at station
-// 0) is sampled at joint stations, every plate's and at most 4 m apart; each compartment is
-// the chord between two joints, with its own rigid frame (x along the chord, y level across,
-// rolled by the cross-fall); neighbours meet on the mitre plane that bisects their chords.
+// compartments, as fabricated: the alignment (in plan a horizontal circle of radius R, or a
+// straight, a transition curve and the circle; rising at a gradient that is constant or
+// changes evenly (a vertical curve); through the point (0, 0, zc) heading +X; zc = half the
+// height at station 0) is sampled at joint stations, every plate's and at most 4 m apart;
+// each compartment is the chord between two joints, with its own rigid frame (x along the
+// chord, y level across, rolled by the cross-fall); neighbours meet on the mitre plane that
+// bisects their chords.
 // Stations are arc length along that polyline, so a plate at station s is s metres of
 // centreline from the girder start.
 #include <Eigen/Geometry>
@@ -47,12 +49,15 @@ class SimAlignment {
   double reference_z() const { return zc_; }
 
  private:
+  double heading(double h) const;              // plan direction at horizontal length h, rad
+  Eigen::Vector2d plan(double h) const;        // plan position at horizontal length h
   Eigen::Vector3d curve(double h) const;       // alignment at horizontal length h
   Eigen::Vector3d curve_dir(double h) const;   // d curve / dh
   double chord_to(double h_a, double length, double sign) const;
 
   bool straight_ = true;
-  double radius_ = 0.0, gradient_ = 0.0, zc_ = 0.0;
+  double curvature_ = 0.0, transition_ = 0.0, transition_start_ = 0.0;  // plan
+  double gradient_ = 0.0, vertical_curvature_ = 0.0, zc_ = 0.0;         // elevation
   std::vector<SimJoint> joints_;
   std::vector<Eigen::Isometry3d> frames_, inverse_;
 };

@@ -229,9 +229,19 @@ void SimConfig::validate() const {
   }
   check_range("gradient_pct", gradient_pct, -10.0, 10.0);
   check_range("cross_fall_deg", cross_fall_deg, -10.0, 10.0);
+  check_range("transition_m", transition_m, 0.0, 1000.0);
+  check_range("transition_start_m", transition_start_m, -1000.0, 10000.0);
+  if (transition_m > 0.0 && curve_radius_m == 0.0)
+    throw ParameterError("simulator: transition_m needs a curve (curve_radius_m not 0)");
+  if (vertical_radius_m != 0.0) {
+    if (!std::isfinite(vertical_radius_m) || std::abs(vertical_radius_m) < 200.0 ||
+        std::abs(vertical_radius_m) > 1e6)
+      throw ParameterError("simulator: vertical_radius_m = " + fmt(vertical_radius_m) +
+                           " must be 0 (constant gradient) or between 200 and 1e+06 in size");
+  }
   if (curved() && !arm_preset.empty())
     throw ParameterError("simulator: arm_preset needs a straight girder (curve_radius_m, "
-                         "gradient_pct and cross_fall_deg 0)");
+                         "gradient_pct, cross_fall_deg and vertical_radius_m 0)");
 }
 
 }  // namespace tunnelmap

@@ -101,7 +101,17 @@ struct SimConfig {
   double curve_radius_m = 0.0;
   double gradient_pct = 0.0;
   double cross_fall_deg = 0.0;
-  bool curved() const { return curve_radius_m != 0.0 || gradient_pct != 0.0 || cross_fall_deg != 0.0; }
+  // A transition curve (clothoid) into the horizontal curve: the girder runs straight up to
+  // station transition_start_m, then its curvature grows evenly over transition_m metres to
+  // 1 / curve_radius_m. 0: the curve runs the whole girder.
+  double transition_m = 0.0;
+  double transition_start_m = 0.0;
+  // Vertical curve (a crest < 0, a sag > 0): the gradient changes by 1 / vertical_radius_m per
+  // metre, gradient_pct being the one at station 0. 0: the gradient is constant.
+  double vertical_radius_m = 0.0;
+  bool curved() const {
+    return curve_radius_m != 0.0 || gradient_pct != 0.0 || cross_fall_deg != 0.0 || vertical_radius_m != 0.0;
+  }
   // End wall: this far beyond the manhole plate if there is one, else beyond the camera (with
   // a walk: beyond its furthest station, or the plate if that is further).
   std::optional<double> end_wall_distance_m = 3.0;

@@ -93,6 +93,11 @@ json sim_config_to_json(const SimConfig& c) {
     j["curve_radius_m"] = c.curve_radius_m;
     j["gradient_pct"] = c.gradient_pct;
     j["cross_fall_deg"] = c.cross_fall_deg;
+    if (c.transition_m > 0.0) {
+      j["transition_m"] = c.transition_m;
+      j["transition_start_m"] = c.transition_start_m;
+    }
+    if (c.vertical_radius_m != 0.0) j["vertical_radius_m"] = c.vertical_radius_m;
   }
   if (c.walk) {
     j["walk"] = {{"start_x_m", c.walk->start_x_m}, {"end_x_m", c.walk->end_x_m},
@@ -227,6 +232,9 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "curve_radius_m", c.curve_radius_m);
     read(j, "gradient_pct", c.gradient_pct);
     read(j, "cross_fall_deg", c.cross_fall_deg);
+    read(j, "transition_m", c.transition_m);
+    read(j, "transition_start_m", c.transition_start_m);
+    read(j, "vertical_radius_m", c.vertical_radius_m);
     if (j.contains("walk") && !j.at("walk").is_null()) {
       const json& w = j.at("walk");
       if (!w.is_object()) throw InputError(source, "simulator walk must be an object or null");

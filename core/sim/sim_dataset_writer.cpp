@@ -113,6 +113,11 @@ json girder_json(const TunnelSimulator& sim, double lo, double hi) {
             {"diaphragms", plates},
             {"compartments", rooms}};
   if (c.girder_length_m) g["length_m"] = *c.girder_length_m;
+  if (c.transition_m > 0.0) {
+    g["transition_m"] = c.transition_m;
+    g["transition_start_m"] = c.transition_start_m;
+  }
+  if (c.vertical_radius_m != 0.0) g["vertical_radius_m"] = c.vertical_radius_m;
   if (!c.stiffeners.empty()) {
     json st = json::array();
     for (const SimStiffener& s : c.stiffeners)

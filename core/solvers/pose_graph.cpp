@@ -142,34 +142,41 @@ void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double ro
   problem.AddResidualBlock(turn, new ceres::HuberLoss(robust_sigmas), pose.q, a.n, b.n);
 }
 
-// The middle stretch's mean normal against the weighted mean of its neighbours' (a normal's
-// length stays 1 on its manifold, so the residual's part along it is second order). The
-// parameters are the normals of a, then b, then c.
+// The weighted sum of the stretches' mean normals (a normal's length stays 1 on its manifold,
+// so the residual's part along it is second order). The parameters are the normals of every
+// stretch in turn.
 struct BendResidual {
-  int na, nb, nc;  // planes in each stretch
-  double weight_a, weight_c, inv_sigma;
+  std::vector<int> counts;  // planes in each stretch
+  std::vector<double> weights;
+  double inv_sigma;
 
   template <typename T>
   bool operator()(T const* const* normals, T* residual) const {
-    auto mean = [&](int from, int count) {
-      Eigen::Matrix<T, 3, 1> m = Eigen::Matrix<T, 3, 1>::Zero();
-      for (int i = from; i < from + count; ++i) m += Eigen::Map<const Eigen::Matrix<T, 3, 1>>(normals[i]);
-      return Eigen::Matrix<T, 3, 1>(m / T(count));
-    };
     Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
-    r = T(inv_sigma) * (mean(na, nb) - T(weight_a) * mean(0, na) - T(weight_c) * mean(na + nb, nc));
+    r.setZero();
+    int first = 0;
+    for (std::size_t k = 0; k < counts.size(); ++k) {
+      Eigen::Matrix<T, 3, 1> sum = Eigen::Matrix<T, 3, 1>::Zero();
+      for (int i = first; i < first + counts[k]; ++i) sum += Eigen::Map<const Eigen::Matrix<T, 3, 1>>(normals[i]);
+      r += T(weights[k] / counts[k]) * sum;
+      first += counts[k];
+    }
+    r *= T(inv_sigma);
     return true;
   }
 };
 
 void add_bend(ceres::Problem& problem, const PlaneBend& b, double robust_sigmas, std::vector<PlaneBlock>& planes) {
-  if (b.a.empty() || b.b.empty() || b.c.empty()) return;
-  auto* cost = new ceres::DynamicAutoDiffCostFunction<BendResidual>(new BendResidual{
-      static_cast<int>(b.a.size()), static_cast<int>(b.b.size()), static_cast<int>(b.c.size()), b.weight_a,
-      b.weight_c, 1.0 / b.sigma_rad});
+  if (b.stretches.empty() || b.stretches.size() != b.weights.size()) return;
+  std::vector<int> counts;
+  for (const std::vector<int>& stretch : b.stretches) {
+    if (stretch.empty()) return;
+    counts.push_back(static_cast<int>(stretch.size()));
+  }
+  auto* cost = new ceres::DynamicAutoDiffCostFunction<BendResidual>(new BendResidual{counts, b.weights, 1.0 / b.sigma_rad});
   std::vector<double*> normals;
-  for (const std::vector<int>* stretch : {&b.a, &b.b, &b.c})
-    for (int plane : *stretch) {
+  for (const std::vector<int>& stretch : b.stretches)
+    for (int plane : stretch) {
       normals.push_back(planes[static_cast<std::size_t>(plane)].n);
       cost->AddParameterBlock(3);
     }
@@ -242,8 +249,8 @@ std::vector<bool> planes_linking_poses(const PoseGraph& graph) {
   for (const PlaneContinuity& c : graph.continuities)
     linked[static_cast<std::size_t>(c.a)] = linked[static_cast<std::size_t>(c.b)] = true;
   for (const PlaneBend& b : graph.bends)
-    for (const std::vector<int>* stretch : {&b.a, &b.b, &b.c})
-      for (int plane : *stretch) linked[static_cast<std::size_t>(plane)] = true;
+    for (const std::vector<int>& stretch : b.stretches)
+      for (int plane : stretch) linked[static_cast<std::size_t>(plane)] = true;
   return linked;
 }
 

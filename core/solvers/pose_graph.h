@@ -50,13 +50,13 @@ struct PlaneContinuity {
   double sigma_rad = 0.0;                            // 0: directions free
 };
 
-// Three stretches of one wall in order along it, `a` and `c` either side of `b`, each the mean
-// of its planes' normals: the girder turns evenly, so b's direction lies between theirs as b
-// lies between them (`weight_a` + `weight_c` = 1), to within `sigma_rad`
+// Stretches of one wall in order along it, each the mean of its planes' normals, combined with
+// weights that sum to zero (a finite difference along the wall): the combination is zero within
+// `sigma_rad` where the wall turns as the girder's alignment does
 // (core/mapping/compartment_bends.h).
 struct PlaneBend {
-  std::vector<int> a, b, c;
-  double weight_a = 0.5, weight_c = 0.5;
+  std::vector<std::vector<int>> stretches;
+  std::vector<double> weights;
   double sigma_rad = 0.001;
 };
 

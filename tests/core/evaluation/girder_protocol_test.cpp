@@ -49,6 +49,40 @@ TEST(GirderFamily, DrawsStayWithinTheRangesAndRepeatWithTheSeed) {
   EXPECT_NE(draw_girders(1, 6, r)[0].summary, a[0].summary);
 }
 
+TEST(GirderFamily, TransitionAndVerticalCurvesChangeOnlyTheCurvedGirdersAndKeepTheGradientInRange) {
+  GirderRanges plain, wide;
+  wide.transition_fraction = 1.0;
+  wide.vertical_curve_fraction = 1.0;
+  const std::vector<GirderDraw> a = draw_girders(100, 5, plain), b = draw_girders(100, 5, wide);
+  int transitions = 0, vertical = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const SimConfig &p = a[i].config, &w = b[i].config;
+    EXPECT_EQ(p.seed, w.seed);  // the rest of the family is the same girders
+    EXPECT_EQ(p.curve_radius_m, w.curve_radius_m);
+    EXPECT_EQ(p.transition_m, 0.0);
+    EXPECT_EQ(p.vertical_radius_m, 0.0);
+    if (w.curve_radius_m == 0.0) {
+      EXPECT_EQ(a[i].summary, b[i].summary);
+      continue;
+    }
+    EXPECT_NO_THROW(w.validate());
+    const double length = *w.girder_length_m;
+    EXPECT_GE(w.transition_m, wide.min_transition_m);
+    EXPECT_LE(w.transition_m, wide.max_transition_m);
+    EXPECT_GE(w.transition_start_m, 0.1 * length);
+    EXPECT_LE(w.transition_start_m, 0.6 * length);
+    transitions += w.transition_m > 0.0;
+    if (w.vertical_radius_m == 0.0) continue;
+    ++vertical;
+    EXPECT_GE(std::abs(w.vertical_radius_m), wide.min_vertical_radius_m);
+    const double end_gradient_pct = w.gradient_pct + 100.0 * length / w.vertical_radius_m;
+    EXPECT_LE(std::abs(end_gradient_pct), wide.max_gradient_pct + 1e-9);
+    EXPECT_NE(b[i].summary.find("vertical R"), std::string::npos);
+  }
+  EXPECT_GT(transitions, 15);
+  EXPECT_GT(vertical, 15);
+}
+
 // Three short girders (seed 21: exact and drifted poses, straight and curved), mapped as `map`
 // maps them. Every girder counts: no seed is picked for passing.
 TEST(GirderProtocol, ASmallFamilyMeetsTheStationPlateAndManholeBounds) {

@@ -13,42 +13,63 @@ std::vector<WallBand> bands_of_kind(int kind, long to_m) {
   return bands;
 }
 
-TEST(CompartmentBends, TiesTheWholeBandsOfEveryThreeNeighbouringCompartments) {
-  // Plates at 3.5, 7.5, 11.5 and 15.5 m: the compartments between hold bands 4-6, 8-10 and
-  // 12-14 whole (3, 7, 11 and 15 hold a plate), at 5.5, 9.5 and 13.5 m.
-  const std::vector<PlaneBend> ties = compartment_bends(bands_of_kind(0, 18), {15.5, 3.5, 11.5, 7.5}, 0.001);
+TEST(CompartmentBends, TiesTheWholeBandsOfEveryFourNeighbouringCompartments) {
+  // Plates at 3.5, 7.5, 11.5, 15.5 and 19.5 m: the compartments between hold bands 4-6, 8-10,
+  // 12-14 and 16-18 whole (3, 7, 11, 15 and 19 hold a plate), at 5.5, 9.5, 13.5 and 17.5 m.
+  // Evenly spaced, the second lies on the quadratic through the others with weights 1/3, 1
+  // and -1/3.
+  const std::vector<PlaneBend> ties = compartment_bends(bands_of_kind(0, 22), {15.5, 3.5, 19.5, 11.5, 7.5}, 0.001);
   ASSERT_EQ(ties.size(), 1u);
-  EXPECT_EQ(ties[0].a, (std::vector<int>{104, 105, 106}));
-  EXPECT_EQ(ties[0].b, (std::vector<int>{108, 109, 110}));
-  EXPECT_EQ(ties[0].c, (std::vector<int>{112, 113, 114}));
-  EXPECT_DOUBLE_EQ(ties[0].weight_a, 0.5);
-  EXPECT_DOUBLE_EQ(ties[0].weight_c, 0.5);
+  ASSERT_EQ(ties[0].stretches.size(), 4u);
+  EXPECT_EQ(ties[0].stretches[0], (std::vector<int>{104, 105, 106}));
+  EXPECT_EQ(ties[0].stretches[1], (std::vector<int>{108, 109, 110}));
+  EXPECT_EQ(ties[0].stretches[2], (std::vector<int>{112, 113, 114}));
+  EXPECT_EQ(ties[0].stretches[3], (std::vector<int>{116, 117, 118}));
+  ASSERT_EQ(ties[0].weights.size(), 4u);
+  EXPECT_NEAR(ties[0].weights[0], -1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(ties[0].weights[1], 1.0, 1e-12);
+  EXPECT_NEAR(ties[0].weights[2], -1.0, 1e-12);
+  EXPECT_NEAR(ties[0].weights[3], 1.0 / 3.0, 1e-12);
   EXPECT_DOUBLE_EQ(ties[0].sigma_rad, 0.001);
 }
 
-TEST(CompartmentBends, WeighsByWhereEachCompartmentsBandsLie) {
-  // Plates at 1, 3, 7 and 13 m, each where a band begins: the compartments hold bands 1-2, 3-6
-  // and 7-12, at 2, 5 and 10 m: the middle one lies 3/8 of the way.
-  const std::vector<PlaneBend> ties = compartment_bends(bands_of_kind(0, 14), {1.0, 3.0, 7.0, 13.0}, 0.001);
+// The tie's weighted sum of the directions of a wall whose heading is h(s) at each
+// compartment's station.
+double tie_residual(const PlaneBend& tie, const std::vector<double>& stations, double (*heading)(double)) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < tie.weights.size(); ++k) sum += tie.weights[k] * heading(stations[k]);
+  return sum;
+}
+
+TEST(CompartmentBends, AnUnevenSpacingStillLeavesAnyEvenChangeOfCurvatureUntied) {
+  // Plates at 1, 3, 7, 13 and 14 m, each where a band begins: the compartments hold bands 1-2,
+  // 3-6, 7-12 and 13, at 2, 5, 10 and 13.5 m. A heading that is a quadratic in the station (a
+  // transition curve) leaves the tie at zero; one that is cubic does not.
+  const std::vector<PlaneBend> ties = compartment_bends(bands_of_kind(0, 16), {1.0, 3.0, 7.0, 13.0, 14.0}, 0.001);
   ASSERT_EQ(ties.size(), 1u);
-  EXPECT_EQ(ties[0].a, (std::vector<int>{101, 102}));
-  EXPECT_EQ(ties[0].b, (std::vector<int>{103, 104, 105, 106}));
-  EXPECT_DOUBLE_EQ(ties[0].weight_c, 3.0 / 8.0);
-  EXPECT_DOUBLE_EQ(ties[0].weight_a, 5.0 / 8.0);
+  EXPECT_EQ(ties[0].stretches[0], (std::vector<int>{101, 102}));
+  EXPECT_EQ(ties[0].stretches[1], (std::vector<int>{103, 104, 105, 106}));
+  EXPECT_EQ(ties[0].stretches[3], (std::vector<int>{113}));
+  const std::vector<double> at = {2.0, 5.0, 10.0, 13.5};
+  double weight_sum = 0.0;
+  for (double w : ties[0].weights) weight_sum += w;
+  EXPECT_NEAR(weight_sum, 0.0, 1e-12);
+  EXPECT_NEAR(tie_residual(ties[0], at, [](double s) { return 0.01 + 0.002 * s + 3e-4 * s * s; }), 0.0, 1e-12);
+  EXPECT_GT(std::abs(tie_residual(ties[0], at, [](double s) { return 1e-4 * s * s * s; })), 1e-3);
 }
 
 TEST(CompartmentBends, EachKindOfWallIsTiedToItselfAndACompartmentNotSeenBreaksTheChain) {
-  std::vector<WallBand> bands = bands_of_kind(0, 18);
-  for (const WallBand& b : bands_of_kind(1, 18))
+  std::vector<WallBand> bands = bands_of_kind(0, 22);
+  for (const WallBand& b : bands_of_kind(1, 22))
     if (b.from_m < 8.0 || b.from_m > 10.0) bands.push_back(b);  // kind 1 unseen in the second compartment
-  const std::vector<PlaneBend> ties = compartment_bends(bands, {3.5, 7.5, 11.5, 15.5}, 0.001);
+  const std::vector<PlaneBend> ties = compartment_bends(bands, {3.5, 7.5, 11.5, 15.5, 19.5}, 0.001);
   ASSERT_EQ(ties.size(), 1u);
-  EXPECT_EQ(ties[0].b, (std::vector<int>{108, 109, 110}));  // kind 0's only
+  EXPECT_EQ(ties[0].stretches[1], (std::vector<int>{108, 109, 110}));  // kind 0's only
 }
 
-TEST(CompartmentBends, NoThreeCompartmentsNoTies) {
+TEST(CompartmentBends, NoFourCompartmentsNoTies) {
   EXPECT_TRUE(compartment_bends(bands_of_kind(0, 18), {}, 0.001).empty());
-  EXPECT_TRUE(compartment_bends(bands_of_kind(0, 18), {4.0, 8.0, 12.0}, 0.001).empty());  // two compartments
+  EXPECT_TRUE(compartment_bends(bands_of_kind(0, 18), {3.5, 7.5, 11.5, 15.5}, 0.001).empty());  // three compartments
 }
 
 }  // namespace

@@ -666,13 +666,13 @@ TEST(PoseRefinement, TheCompartmentBeyondAPlateDoesNotRollAwayFromTheOneBeforeIt
   EXPECT_LT(r.tied_deg, 0.05);
 }
 
-// A walk of 89 poses 0.25 m apart through diaphragms every 4 m from x = 4 to 20 m: each frame
+// A walk of 121 poses 0.25 m apart through diaphragms every 4 m from x = 4 to 28 m: each frame
 // sees the walls ahead up to the next plate, and that plate; near a plate only the side walls.
 PlateWalk plates_walk() {
   const bool all[4] = {true, true, true, true}, sides[4] = {true, true, false, false};
-  constexpr double kSpacing = 4.0, kLast = 20.0;
+  constexpr double kSpacing = 4.0, kLast = 28.0;
   PlateWalk w;
-  for (int g = 0; g < 89; ++g) {
+  for (int g = 0; g < 121; ++g) {
     const double x = 0.25 * g;
     const Eigen::Isometry3d T = camera_at(x, 0.02 * std::sin(0.7 * g), 0.6 + 0.03 * std::cos(0.9 * g));
     const double ahead = kSpacing * std::floor(x / kSpacing + 1.0), behind = ahead - kSpacing;
@@ -702,20 +702,22 @@ std::vector<Eigen::Isometry3d> swung_over_plate(const std::vector<Eigen::Isometr
 
 TEST(PoseRefinement, ACompartmentDoesNotTurnAwayFromItsNeighbours) {
   // The heading, at the plates of a straight girder. A curving girder turns, and a chorded one
-  // kinks at its plates, so no wall is tied to the next across a plate. But a girder turns
-  // evenly: each compartment's direction lies between its neighbours'. The odometry turns
-  // 0.6 degrees over the climb at 8 m and back at 12 m, carrying the positions with it (dead
-  // reckoning): the compartment between is turned back (measured: 0.16 degrees left, spread
-  // over its neighbours); left free it keeps most of the turn (0.40 degrees).
+  // kinks at its plates, so no wall is tied to the next across a plate. But a girder's turn
+  // changes evenly: each compartment's direction lies on the quadratic through its
+  // neighbours'. The odometry turns 0.6 degrees over the climb at 12 m and back at 16 m,
+  // carrying the positions with it (dead reckoning): the compartment between is turned back
+  // as far as the ties can tell a jog from a quadratic: the best quadratic through the six
+  // compartments keeps 0.37 of a one-compartment jog, 0.22 degrees (measured: 0.215). Left
+  // free it keeps most of the turn (0.41 degrees).
   const PlateWalk w = plates_walk();
-  const std::vector<Eigen::Isometry3d> given = swung_over_plate(swung_over_plate(w.truth, 0.6, 8.0), -0.6, 12.0);
+  const std::vector<Eigen::Isometry3d> given = swung_over_plate(swung_over_plate(w.truth, 0.6, 12.0), -0.6, 16.0);
   SlamOptions tied, free;
   tied.compartment_turn_rad = 0.01 * kDeg;
   free.compartment_turn_rad = 0.0;
   const TiedAndFree r{worst_rotation_past_deg(w, given, tied, 0.0), worst_rotation_past_deg(w, given, free, 0.0)};
   std::printf("heading: compartments tied %.3f deg, free %.3f deg\n", r.tied_deg, r.free_deg);
   EXPECT_GT(r.free_deg, 0.3);
-  EXPECT_LT(r.tied_deg, 0.5 * r.free_deg);
+  EXPECT_LT(r.tied_deg, 0.24);
 }
 
 TEST(PoseRefinement, TheWallTiesShapeTheFinalOptimisationNotTheWalk) {

@@ -515,6 +515,69 @@ TEST(SimGirderTest, CurvedGirderWallPointsLieOnTheTruthWalls) {
   fs::remove_all(dir);
 }
 
+// Heading in plan (rad, left positive) and slope of the truth centreline's chord between two
+// of its stations.
+struct Chord {
+  double heading, slope;
+};
+Chord chord(const json& line, double from_m, double to_m) {
+  const auto at = [&](double s) {
+    const json& p = line.at(static_cast<std::size_t>(std::lround(s / 0.1))).at("point");
+    return Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
+  };
+  const Eigen::Vector3d d = at(to_m) - at(from_m);
+  return {std::atan2(d.y(), d.x()), d.z() / d.head<2>().norm()};
+}
+
+TEST(SimGirderTest, ATransitionCurveAndAVerticalCurveBendTheGirderAsDesigned) {
+  // Straight to 6 m, then a 12 m transition into a 150 m curve to the right; the gradient
+  // falls from +2 % by 0.1 % per metre (a crest, R = 1000 m). Plates every 4 m are joints.
+  SimConfig c = exact(girder_config(30.0, 4.0, 3));
+  c.curve_radius_m = -150.0;
+  c.transition_start_m = 6.0;
+  c.transition_m = 12.0;
+  c.gradient_pct = 2.0;
+  c.vertical_radius_m = -1000.0;
+  c.cross_fall_deg = 2.0;
+  c.rust_patches_per_wall = 0;
+  const fs::path dir = fresh_dir("transition");
+  write_sim_dataset(dir.string(), c);
+  std::ifstream in(dir / "dataset.json");
+  const json j = json::parse(in);
+  const json& line = j.at("ground_truth").at("girder").at("centreline");
+  // Straight before the transition.
+  EXPECT_NEAR(chord(line, 0.0, 4.0).heading, 0.0, 1e-9);
+  // In the transition the heading grows as the square of the distance into it (the chord
+  // from 2 to 6 m in: the mean of u^2 over it is 52/3), and after it the circle turns evenly.
+  EXPECT_NEAR(chord(line, 8.0, 12.0).heading, -(52.0 / 3.0) / (2.0 * 150.0 * 12.0), 2e-4);
+  EXPECT_NEAR(chord(line, 24.0, 28.0).heading, -(12.0 / (2.0 * 150.0) + 8.0 / 150.0), 2e-4);
+  // The gradient at 2 m and at 26 m.
+  EXPECT_NEAR(chord(line, 0.0, 4.0).slope, 0.02 - 2.0 / 1000.0, 1e-4);
+  EXPECT_NEAR(chord(line, 24.0, 28.0).slope, 0.02 - 26.0 / 1000.0, 1e-4);
+  // The frames see walls where the truth puts them.
+  const Dataset ds = read_dataset(dir.string());
+  const TunnelSimulator sim(c);
+  double worst = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < ds.frames.size(); ++i) {
+    const DepthFrame f = ds.load_frame(i);
+    const std::vector<std::uint16_t> gt = ds.load_gt_surfaces(i);
+    const Eigen::Isometry3d T = pose_from_json(j.at("frames")[i].at("pose_true"));
+    for (int v = 0; v < f.height; v += 4)
+      for (int u = 0; u < f.width; u += 4) {
+        const SimSurface* s = sim.surface(gt[v * f.width + u]);
+        if (!s || s->zone != "edge" || f.depth_m(u, v) <= 0.0f) continue;
+        const TruthOffset o = truth_offset(line, 2.0, world_point(f, T, u, v));
+        if (s->wall == "left") worst = std::max(worst, std::abs(o.y - 0.42));
+        if (s->wall == "right") worst = std::max(worst, std::abs(o.y + 0.42));
+        ++n;
+      }
+  }
+  EXPECT_GT(n, 1000);
+  EXPECT_LT(worst, 0.002);
+  fs::remove_all(dir);
+}
+
 TEST(SimGirderTest, DiaphragmTruthMatchesTheRenderedPlate) {
   // Straight and curved: the pixels of each diaphragm lie on its truth plane, at its station,
   // and the pixels seen through the opening are inside the truth opening.
@@ -594,7 +657,8 @@ TEST(SimGirderTest, CliGirderFlags) {
   EXPECT_EQ(run_cli_err("simulate " + dir.string() +
                             " --preset field --girder 12 --diaphragm-spacing 4 --frames 3"
                             " --manhole rounded_rectangle,0.5,0.7,0.45,0.1 --curve-radius -150"
-                            " --gradient-pct 4 --cross-fall-deg 2 --drift 6,0.12 --quiet",
+                            " --gradient-pct 4 --cross-fall-deg 2 --drift 6,0.12 --transition 3,5"
+                            " --vertical-radius -2000 --quiet",
                         err),
             0)
       << err;
@@ -606,6 +670,10 @@ TEST(SimGirderTest, CliGirderFlags) {
   EXPECT_EQ(sim.at("manhole_shape"), "rounded_rectangle");
   EXPECT_EQ(sim.at("manhole_corner_radius_m").get<double>(), 0.1);
   EXPECT_EQ(sim.at("curve_radius_m").get<double>(), -150.0);
+  EXPECT_EQ(sim.at("transition_start_m").get<double>(), 3.0);
+  EXPECT_EQ(sim.at("transition_m").get<double>(), 5.0);
+  EXPECT_EQ(sim.at("vertical_radius_m").get<double>(), -2000.0);
+  EXPECT_EQ(j.at("ground_truth").at("girder").at("vertical_radius_m").get<double>(), -2000.0);
   EXPECT_EQ(sim.at("walk").at("stops"), 3);
   EXPECT_EQ(sim.at("walk").at("through_openings"), true);
   EXPECT_EQ(j.at("ground_truth").at("girder").at("diaphragms").size(), 2u);
@@ -626,6 +694,10 @@ TEST(SimGirderTest, CliGirderFlags) {
       {"--curve-radius 10", "--curve-radius"},
       {"--gradient-pct 20", "--gradient-pct"},
       {"--cross-fall-deg 11", "--cross-fall-deg"},
+      {"--transition 3,5", "--transition"},
+      {"--curve-radius 150 --transition 3", "--transition"},
+      {"--curve-radius 150 --transition 3,-5", "--transition"},
+      {"--vertical-radius 50", "--vertical-radius"},
   };
   for (const auto& [args, flag] : bad) {
     EXPECT_EQ(run_cli_err("simulate " + dir.string() + " " + args, err), 2) << args;
