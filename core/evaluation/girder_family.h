@@ -20,10 +20,11 @@ struct GirderRanges {
   double max_gradient_pct = 6.0, max_cross_fall_deg = 3.0;
   // Of the curved girders: those that run straight and then into the curve along a transition
   // curve inside the girder, and those on a vertical curve (the gradient changes, staying
-  // within max_gradient_pct). Drawn from a stream of their own: at 0 the family is the same.
-  double transition_fraction = 0.0;
+  // within max_gradient_pct). Drawn from a stream of their own: the other girders are the
+  // same whatever these are.
+  double transition_fraction = 0.5;
   double min_transition_m = 15.0, max_transition_m = 60.0;
-  double vertical_curve_fraction = 0.0;
+  double vertical_curve_fraction = 0.5;
   double min_vertical_radius_m = 1500.0, max_vertical_radius_m = 15000.0;
   double drifted_fraction = 0.5;    // walks whose poses drift
   double drift_translation_mm_per_sqrt_m = 10.0, drift_rotation_deg_per_sqrt_m = 0.2;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <Eigen/Core>
 #include <map>
 
 namespace tunnelmap {
@@ -56,6 +57,58 @@ std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std
                      {-w[0], 1.0, -w[1], -w[2]},
                      sigma_rad});
     }
+  return out;
+}
+
+std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<WallBand>& bands,
+                                                           std::vector<double> plate_stations_m, double sigma_rad) {
+  std::sort(plate_stations_m.begin(), plate_stations_m.end());
+  std::vector<std::vector<PlaneBend>> out;
+  for (const auto& [kind, of_kind] : compartments(bands, plate_stations_m)) {
+    std::vector<PlaneBend> turns;
+    for (const auto& [k, middle] : of_kind) {
+      const auto before = of_kind.find(k - 1), after = of_kind.find(k + 1);
+      if (before == of_kind.end() || after == of_kind.end()) continue;
+      const double s_a = before->second.station_m(), s_b = middle.station_m(), s_c = after->second.station_m();
+      const double weight_c = (s_b - s_a) / (s_c - s_a);
+      turns.push_back({{before->second.planes, middle.planes, after->second.planes}, {weight_c - 1.0, 1.0, -weight_c}, sigma_rad});
+    }
+    if (!turns.empty()) out.push_back(std::move(turns));
+  }
+  return out;
+}
+
+namespace {
+
+// The tie's weighted sum of its stretches' mean normals at `planes` (radians, as a vector).
+Eigen::Vector3d departure(const PlaneBend& tie, const std::vector<GraphPlane>& planes) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < tie.stretches.size(); ++k) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int plane : tie.stretches[k]) mean += planes[static_cast<std::size_t>(plane)].normal;
+    sum += tie.weights[k] * mean / static_cast<double>(tie.stretches[k].size());
+  }
+  return sum;
+}
+
+}  // namespace
+
+std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<PlaneBend>>& turns,
+                                                             const std::vector<GraphPlane>& planes) {
+  constexpr int kReach = 2;  // turns either side in the neighbourhood
+  std::vector<PlaneBend> out;
+  for (const std::vector<PlaneBend>& of_kind : turns) {
+    std::vector<Eigen::Vector3d> departures;
+    for (const PlaneBend& t : of_kind) departures.push_back(departure(t, planes));
+    const int n = static_cast<int>(of_kind.size());
+    for (int i = 0; i < n; ++i) {
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      const int from = std::max(0, i - kReach), to = std::min(n - 1, i + kReach);
+      for (int j = from; j <= to; ++j) sum += departures[static_cast<std::size_t>(j)];
+      if (sum.norm() / (to - from + 1) < of_kind[static_cast<std::size_t>(i)].sigma_rad)
+        out.push_back(of_kind[static_cast<std::size_t>(i)]);
+    }
+  }
   return out;
 }
 

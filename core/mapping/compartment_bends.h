@@ -6,10 +6,12 @@
 // between (a chorded girder's splices); either way the mean direction of a compartment's walls
 // is the girder's direction near the compartment's middle. So of four neighbouring
 // compartments, the second one's mean wall direction lies on the quadratic through the other
-// three's. Three compartments would say more (an even turn) but are wrong along a transition:
-// on a 150 m curve reached over 57 m, they put the middle compartment 0.05 degrees off where
-// the girder turns, five times the tie's default tolerance. Ties of bands either side of one
-// plate cannot say as much: a chorded girder may turn at the plate itself.
+// three's. Three compartments say more (an even turn: the middle one's direction between the
+// outer two's) but are wrong along a transition: on a 150 m curve reached over 57 m, they put
+// the middle compartment 0.05 degrees off where the girder turns, five times the tie's default
+// tolerance. So the even turn is tied only where the map, tied to the quadratic, shows none of
+// that: over a straight or a circular arc. Ties of bands either side of one plate cannot say
+// as much: a chorded girder may turn at the plate itself.
 #include <vector>
 
 #include "core/solvers/pose_graph.h"
@@ -31,5 +33,19 @@ struct WallBand {
 // the stretches before the first and past the last plate are open-ended and take no part.
 std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
                                          double sigma_rad);
+
+// Per kind, in order along the girder: every three neighbouring compartments' even turn (the
+// middle one's mean direction between the outer two's, in proportion to the distances between
+// them), within `sigma_rad`.
+std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<WallBand>& bands,
+                                                           std::vector<double> plate_stations_m, double sigma_rad);
+
+// The even turns whose neighbourhood (the turn and the two before and after it, of one kind)
+// departs from an even turn at `planes` by less than the tie's tolerance on average: where the
+// girder's curvature does not change. Along a transition curve the departures share one sign
+// and add up; the odometry's wander, once the quadratic ties hold it, leaves departures of a
+// few thousandths of a degree that change sign.
+std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<PlaneBend>>& turns,
+                                                             const std::vector<GraphPlane>& planes);
 
 }  // namespace tunnelmap

@@ -41,12 +41,12 @@ inline constexpr ParameterKey<double> wall_turn_deg{
     "(applied with the wall continuity, slam.wall_continuity_mm); 0 leaves it free"};
 inline constexpr ParameterKey<double> compartment_turn_deg{
     "slam.compartment_turn_deg", "deg", 0.01, 0.0, 10.0, 0.005, Stage::Map, "Turn between compartments",
-    "How far a compartment's walls may point off the turn of its neighbours (of four "
-    "neighbouring compartments, the second off the quadratic through the others' directions): a "
-    "girder follows straights, arcs and transition curves, whose curvature is constant or "
-    "changes evenly, whether its walls curve or kink at the plates (applied by the final "
-    "optimisation, with the wall continuity); 0 leaves each compartment's direction to the "
-    "odometry"};
+    "How far a compartment's walls may point off the turn of its neighbours: a girder follows "
+    "straights, arcs and transition curves, whose curvature is constant or changes evenly, "
+    "whether its walls curve or kink at the plates. Of four neighbouring compartments the second "
+    "lies on the quadratic through the others' directions; where the map then turns evenly, the "
+    "middle of three also lies between the outer two (applied by the final optimisation, with "
+    "the wall continuity); 0 leaves each compartment's direction to the odometry"};
 inline constexpr ParameterKey<double> max_wall_depth_m{
     "slam.max_wall_depth_m", "m", 4.0, 0.5, 20.0, 0.1, Stage::Map, "Wall range",
     "Wall points farther from the camera than this do not localise it"};

@@ -250,10 +250,34 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
 // The girder's turn tied from one compartment to the next, once the walk has seen its plates.
 std::vector<PlaneBend> StructureSlam::turn_ties() const {
   if (!(options_.compartment_turn_rad > 0.0)) return {};
+  return compartment_bends(wall_bands(), cuts_m_, options_.compartment_turn_rad);
+}
+
+std::vector<std::vector<PlaneBend>> StructureSlam::even_turns() const {
+  return compartment_even_turns(wall_bands(), cuts_m_, options_.compartment_turn_rad);
+}
+
+std::vector<WallBand> StructureSlam::wall_bands() const {
   std::vector<WallBand> bands;
   for (const auto& [key, layer] : zone_layers_)
     bands.push_back({key.first, bands_.from_m(key.second), bands_.to_m(key.second), layer.plane});
-  return compartment_bends(bands, cuts_m_, options_.compartment_turn_rad);
+  return bands;
+}
+
+// Where the map, its turn tied to a quadratic, turns evenly (a straight or an arc), the even
+// turn is tied as well and the graph solved again from there (core/mapping/compartment_bends.h).
+PoseGraphSolution StructureSlam::with_even_turns(const PoseGraphSolution& tied) const {
+  if (!(options_.compartment_turn_rad > 0.0)) return tied;
+  const std::vector<PlaneBend> even = even_turns_where_the_map_turns_evenly(even_turns(), tied.planes);
+  if (even.empty()) return tied;
+  PoseGraph graph = graph_;
+  graph.poses = tied.poses;
+  graph.planes = tied.planes;
+  graph.bends.insert(graph.bends.end(), even.begin(), even.end());
+  PoseGraphSolution out = solve_pose_graph(graph);
+  out.iterations += tied.iterations;
+  out.initial_cost = tied.initial_cost;
+  return out;
 }
 
 // Each plate cuts the cell it was first seen in, where the plate is now estimated to lie (kept
@@ -462,9 +486,10 @@ PoseRefinement StructureSlam::finish() {
   PoseRefinement out;
   if (groups_.empty()) return out;
   graph_.bends = turn_ties();
-  const PoseGraphSolution s = solve_under_evidence(
+  PoseGraphSolution s = solve_under_evidence(
       graph_, {}, static_cast<int>(groups_.size()) - 1, options_.correction_sigmas,
       [&](const PoseGraph& g) { return solve_at_given_poses(g); }, out.evidence, out.given_poses_kept);
+  if (!out.given_poses_kept) s = with_even_turns(s);
   graph_.poses = s.poses;
   graph_.planes = s.planes;
   out.ran = !graph_.patches.empty();

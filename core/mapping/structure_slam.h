@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/mapping/compartment_bends.h"
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/plate_tracks.h"
 #include "core/mapping/pose_refinement.h"
@@ -94,6 +95,9 @@ class StructureSlam {
   ZoneLayers zone_layers_;
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
   std::vector<PlaneBend> turn_ties() const;
+  std::vector<std::vector<PlaneBend>> even_turns() const;
+  std::vector<WallBand> wall_bands() const;
+  PoseGraphSolution with_even_turns(const PoseGraphSolution& tied) const;
   Eigen::Vector3d wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const;
   PlateTracks plates_;
   // The wall bands, cut at the plates (core/mapping/wall_band_grid.h).

@@ -51,6 +51,7 @@ TEST(GirderFamily, DrawsStayWithinTheRangesAndRepeatWithTheSeed) {
 
 TEST(GirderFamily, TransitionAndVerticalCurvesChangeOnlyTheCurvedGirdersAndKeepTheGradientInRange) {
   GirderRanges plain, wide;
+  plain.transition_fraction = plain.vertical_curve_fraction = 0.0;
   wide.transition_fraction = 1.0;
   wide.vertical_curve_fraction = 1.0;
   const std::vector<GirderDraw> a = draw_girders(100, 5, plain), b = draw_girders(100, 5, wide);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace tunnelmap {
 namespace {
 
@@ -65,6 +67,53 @@ TEST(CompartmentBends, EachKindOfWallIsTiedToItselfAndACompartmentNotSeenBreaksT
   const std::vector<PlaneBend> ties = compartment_bends(bands, {3.5, 7.5, 11.5, 15.5, 19.5}, 0.001);
   ASSERT_EQ(ties.size(), 1u);
   EXPECT_EQ(ties[0].stretches[1], (std::vector<int>{108, 109, 110}));  // kind 0's only
+}
+
+TEST(CompartmentBends, AnEvenTurnPutsTheMiddleOfThreeCompartmentsBetweenTheOthers) {
+  // Plates at 1, 3, 7 and 13 m, each where a band begins: the compartments hold bands 1-2, 3-6
+  // and 7-12, at 2, 5 and 10 m: the middle one lies 3/8 of the way.
+  const std::vector<std::vector<PlaneBend>> turns = compartment_even_turns(bands_of_kind(0, 14), {1.0, 3.0, 7.0, 13.0}, 0.001);
+  ASSERT_EQ(turns.size(), 1u);
+  ASSERT_EQ(turns[0].size(), 1u);
+  const PlaneBend& t = turns[0][0];
+  EXPECT_EQ(t.stretches[0], (std::vector<int>{101, 102}));
+  EXPECT_EQ(t.stretches[1], (std::vector<int>{103, 104, 105, 106}));
+  ASSERT_EQ(t.weights.size(), 3u);
+  EXPECT_DOUBLE_EQ(t.weights[0], -5.0 / 8.0);
+  EXPECT_DOUBLE_EQ(t.weights[1], 1.0);
+  EXPECT_DOUBLE_EQ(t.weights[2], -3.0 / 8.0);
+}
+
+// Planes 100 + b of a wall whose heading at band b's middle (b + 0.5 m) is heading(b + 0.5).
+std::vector<GraphPlane> wall_heading(long bands, double (*heading)(double)) {
+  std::vector<GraphPlane> planes(static_cast<std::size_t>(100 + bands));
+  for (long b = 0; b < bands; ++b) {
+    const double t = heading(b + 0.5);
+    planes[static_cast<std::size_t>(100 + b)] = {Eigen::Vector3d(-std::sin(t), std::cos(t), 0.0), 0.0};
+  }
+  return planes;
+}
+
+TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransition) {
+  // Plates every 4 m from 3.5 to 39.5 m: nine compartments, seven even turns, tolerance 0.01
+  // degrees. A circular arc with a wander of 0.002 degrees keeps them all; a transition curve
+  // (the heading grows as x^2 / (2 R L), R 150 m, L 57 m: 0.047 degrees off an even turn at
+  // every plate) keeps none; a transition over the last part keeps those before it.
+  std::vector<double> plates;
+  for (double x = 3.5; x < 40.0; x += 4.0) plates.push_back(x);
+  const double sigma = 0.01 * M_PI / 180.0;
+  const std::vector<std::vector<PlaneBend>> turns = compartment_even_turns(bands_of_kind(0, 44), plates, sigma);
+  ASSERT_EQ(turns.size(), 1u);
+  ASSERT_EQ(turns[0].size(), 7u);
+  const auto arc = [](double x) { return x / 300.0 + 0.002 * M_PI / 180.0 * std::sin(2.0 * x); };
+  const auto transition = [](double x) { return x * x / (2.0 * 150.0 * 57.0); };
+  const auto late = [](double x) { return x < 25.5 ? 0.0 : (x - 25.5) * (x - 25.5) / (2.0 * 150.0 * 57.0); };
+  EXPECT_EQ(even_turns_where_the_map_turns_evenly(turns, wall_heading(44, arc)).size(), 7u);
+  EXPECT_TRUE(even_turns_where_the_map_turns_evenly(turns, wall_heading(44, transition)).empty());
+  const std::vector<PlaneBend> kept = even_turns_where_the_map_turns_evenly(turns, wall_heading(44, late));
+  ASSERT_FALSE(kept.empty());
+  EXPECT_LT(kept.size(), 7u);
+  EXPECT_EQ(kept[0].stretches[1], turns[0][0].stretches[1]);
 }
 
 TEST(CompartmentBends, NoFourCompartmentsNoTies) {
