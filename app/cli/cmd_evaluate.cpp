@@ -263,7 +263,7 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--min-length", o.min_length, "Shortest girder drawn, metres (default 30)");
   cmd->add_option("--max-length", o.max_length, "Longest girder drawn, metres (default 40)");
   cmd->add_option("--curved-fraction", o.curved_fraction, "Share of girders drawn on a horizontal curve with gradient and cross-fall, 0-1 (default 0.3)");
-  cmd->add_option("--transition-fraction", o.transition_fraction, "Share of the curved girders that run straight and then into their curve along a transition curve inside the girder, 0-1 (default 0.5)");
+  cmd->add_option("--transition-fraction", o.transition_fraction, "Share of the curved girders that run straight and then into their curve along a transition curve that starts inside the girder, 0-1 (default 0.5)");
   cmd->add_option("--vertical-curve-fraction", o.vertical_curve_fraction, "Share of the curved girders on a vertical curve (a crest or a sag: the gradient changes along the girder), 0-1 (default 0.5)");
   cmd->add_option("--drifted-fraction", o.drifted_fraction, "Share of walks whose poses drift, 0-1 (default 0.5)");
   cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");

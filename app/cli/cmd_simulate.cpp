@@ -159,7 +159,7 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
     if (c.curve_radius_m == 0.0) refuse("--transition needs --curve-radius");
     const std::vector<double> v = parse_sim_numbers("--transition", *o.transition, 2, "START,LENGTH");
     check("--transition", "START", v[0], -1000.0, 10000.0);
-    check("--transition", "LENGTH", v[1], 0.0, 1000.0);
+    check("--transition", "LENGTH", v[1], 0.1, 1000.0);
     c.transition_start_m = v[0];
     c.transition_m = v[1];
   }
@@ -332,7 +332,7 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Cross-fall: roll of the cross-section in degrees (> 0 lifts the left wall; -10..10)");
   sub->add_option("--transition", opt->transition,
                   "Transition curve START,LENGTH (metres): straight up to station START, then the "
-                  "curvature grows evenly over LENGTH to that of --curve-radius");
+                  "curvature grows evenly over LENGTH (>= 0.1) to that of --curve-radius");
   sub->add_option("--vertical-radius", opt->vertical_radius,
                   "Vertical curve radius in metres (0 = constant gradient, > 0 sag, < 0 crest; "
                   "|R| >= 200): the gradient changes by 1/R per metre from --gradient-pct at station 0");

@@ -19,7 +19,7 @@ struct GirderRanges {
   double min_radius_m = 150.0, max_radius_m = 1000.0;
   double max_gradient_pct = 6.0, max_cross_fall_deg = 3.0;
   // Of the curved girders: those that run straight and then into the curve along a transition
-  // curve inside the girder, and those on a vertical curve (the gradient changes, staying
+  // curve that starts inside the girder (it may end beyond it), and those on a vertical curve (the gradient changes, staying
   // within max_gradient_pct). Drawn from a stream of their own: the other girders are the
   // same whatever these are.
   double transition_fraction = 0.5;

@@ -10,8 +10,10 @@
 // outer two's) but are wrong along a transition: on a 150 m curve reached over 57 m, they put
 // the middle compartment 0.05 degrees off where the girder turns, five times the tie's default
 // tolerance. So the even turn is tied only where the map, tied to the quadratic, shows none of
-// that: over a straight or a circular arc. Ties of bands either side of one plate cannot say
-// as much: a chorded girder may turn at the plate itself.
+// that: over a straight or a gentle arc. (On an arc tighter than about 54 plate spacings the
+// even turn's own departure along the normal, 1 - cos of the turn between compartments,
+// exceeds the default tolerance, and it is not tied there.) Ties of bands either side of one
+// plate cannot say as much: a chorded girder may turn at the plate itself.
 #include <vector>
 
 #include "core/solvers/pose_graph.h"

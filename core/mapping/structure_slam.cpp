@@ -276,7 +276,7 @@ PoseGraphSolution StructureSlam::with_even_turns(const PoseGraphSolution& tied) 
   graph.bends.insert(graph.bends.end(), even.begin(), even.end());
   PoseGraphSolution out = solve_pose_graph(graph);
   out.iterations += tied.iterations;
-  out.initial_cost = tied.initial_cost;
+  out.converged = out.converged && tied.converged;
   return out;
 }
 

@@ -96,8 +96,9 @@ std::vector<GraphPlane> wall_heading(long bands, double (*heading)(double)) {
 
 TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransition) {
   // Plates every 4 m from 3.5 to 39.5 m: nine compartments, seven even turns, tolerance 0.01
-  // degrees. A circular arc with a wander of 0.002 degrees keeps them all; a transition curve
-  // (the heading grows as x^2 / (2 R L), R 150 m, L 57 m: 0.047 degrees off an even turn at
+  // degrees. A circular arc of 300 m with a wander of 0.002 degrees keeps them all (a tighter
+  // one would not: see compartment_bends.h); a transition curve
+  // (the heading grows as x^2 / (2 R L), R 150 m, L 57 m: 0.054 degrees off an even turn at
   // every plate) keeps none; a transition over the last part keeps those before it.
   std::vector<double> plates;
   for (double x = 3.5; x < 40.0; x += 4.0) plates.push_back(x);

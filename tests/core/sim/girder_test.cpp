@@ -693,6 +693,7 @@ TEST(SimGirderTest, CliGirderFlags) {
       {"--transition 3,5", "--transition"},
       {"--curve-radius 150 --transition 3", "--transition"},
       {"--curve-radius 150 --transition 3,-5", "--transition"},
+      {"--curve-radius 150 --transition 3,0", "--transition"},
       {"--vertical-radius 50", "--vertical-radius"},
   };
   for (const auto& [args, flag] : bad) {
