@@ -80,15 +80,15 @@ std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<Wal
 
 namespace {
 
-// The tie's weighted sum of its stretches' mean normals at `planes` (radians, as a vector).
+// The tie's departure at `planes` (radians, as a vector; core/solvers/pose_graph.h).
 Eigen::Vector3d departure(const PlaneBend& tie, const std::vector<GraphPlane>& planes) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < tie.stretches.size(); ++k) {
+  std::vector<Eigen::Vector3d> means;
+  for (const std::vector<int>& stretch : tie.stretches) {
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int plane : tie.stretches[k]) mean += planes[static_cast<std::size_t>(plane)].normal;
-    sum += tie.weights[k] * mean / static_cast<double>(tie.stretches[k].size());
+    for (int plane : stretch) mean += planes[static_cast<std::size_t>(plane)].normal;
+    means.push_back(mean / static_cast<double>(stretch.size()));
   }
-  return sum;
+  return bend_departure(means, tie.weights);
 }
 
 }  // namespace

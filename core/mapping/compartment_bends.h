@@ -10,10 +10,8 @@
 // outer two's) but are wrong along a transition: on a 150 m curve reached over 57 m, they put
 // the middle compartment 0.05 degrees off where the girder turns, five times the tie's default
 // tolerance. So the even turn is tied only where the map, tied to the quadratic, shows none of
-// that: over a straight or a gentle arc. (On an arc tighter than about 54 plate spacings the
-// even turn's own departure along the normal, 1 - cos of the turn between compartments,
-// exceeds the default tolerance, and it is not tied there.) Ties of bands either side of one
-// plate cannot say as much: a chorded girder may turn at the plate itself.
+// that: over a straight or a circular arc. Ties of bands either side of one plate cannot say
+// as much: a chorded girder may turn at the plate itself.
 #include <vector>
 
 #include "core/solvers/pose_graph.h"
@@ -43,7 +41,8 @@ std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<Wal
                                                            std::vector<double> plate_stations_m, double sigma_rad);
 
 // The even turns whose neighbourhood (the turn and the two before and after it, of one kind)
-// departs from an even turn at `planes` by less than the tie's tolerance on average: where the
+// departs from an even turn at `planes` (bend_departure, core/solvers/pose_graph.h) by less
+// than the tie's tolerance on average: where the
 // girder's curvature does not change. Along a transition curve the departures share one sign
 // and add up; the odometry's wander, once the quadratic ties hold it, leaves departures of a
 // few thousandths of a degree that change sign.

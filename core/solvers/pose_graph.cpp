@@ -142,9 +142,8 @@ void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double ro
   problem.AddResidualBlock(turn, new ceres::HuberLoss(robust_sigmas), pose.q, a.n, b.n);
 }
 
-// The weighted sum of the stretches' mean normals (a normal's length stays 1 on its manifold,
-// so the residual's part along it is second order). The parameters are the normals of every
-// stretch in turn.
+// The bend's departure (bend_departure). The parameters are the normals of every stretch in
+// turn.
 struct BendResidual {
   std::vector<int> counts;  // planes in each stretch
   std::vector<double> weights;
@@ -152,16 +151,16 @@ struct BendResidual {
 
   template <typename T>
   bool operator()(T const* const* normals, T* residual) const {
-    Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
-    r.setZero();
+    std::vector<Eigen::Matrix<T, 3, 1>> means;
     int first = 0;
-    for (std::size_t k = 0; k < counts.size(); ++k) {
+    for (int count : counts) {
       Eigen::Matrix<T, 3, 1> sum = Eigen::Matrix<T, 3, 1>::Zero();
-      for (int i = first; i < first + counts[k]; ++i) sum += Eigen::Map<const Eigen::Matrix<T, 3, 1>>(normals[i]);
-      r += T(weights[k] / counts[k]) * sum;
-      first += counts[k];
+      for (int i = first; i < first + count; ++i) sum += Eigen::Map<const Eigen::Matrix<T, 3, 1>>(normals[i]);
+      means.push_back(sum / T(count));
+      first += count;
     }
-    r *= T(inv_sigma);
+    Eigen::Map<Eigen::Matrix<T, 3, 1>> r(residual);
+    r = T(inv_sigma) * bend_departure(means, weights);
     return true;
   }
 };

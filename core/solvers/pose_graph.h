@@ -5,6 +5,7 @@
 // of its points' squared distances to the plane at the cost of one residual block. Generic: it
 // knows nothing of tunnels (core/mapping/structure_slam.h builds the graph of a girder).
 #include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 namespace tunnelmap {
@@ -59,6 +60,21 @@ struct PlaneBend {
   std::vector<double> weights;
   double sigma_rad = 0.001;
 };
+
+// A bend's departure from `means` (each stretch's mean normal, in the bend's order): their
+// weighted sum, less its part along their mean direction. That part is second order in the
+// turns between the stretches (1 - cos of the turn, for an even turn) and says nothing of how
+// the wall turns; left in, it would pull a tightly turning wall straighter.
+template <typename T>
+Eigen::Matrix<T, 3, 1> bend_departure(const std::vector<Eigen::Matrix<T, 3, 1>>& means, const std::vector<double>& weights) {
+  Eigen::Matrix<T, 3, 1> sum = Eigen::Matrix<T, 3, 1>::Zero(), direction = Eigen::Matrix<T, 3, 1>::Zero();
+  for (std::size_t k = 0; k < means.size(); ++k) {
+    sum += T(weights[k]) * means[k];
+    direction += T(std::abs(weights[k])) * means[k];
+  }
+  direction /= direction.norm();
+  return sum - sum.dot(direction) * direction;
+}
 
 struct PoseGraph {
   std::vector<Eigen::Isometry3d> poses;  // initial values

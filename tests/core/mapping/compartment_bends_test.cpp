@@ -96,8 +96,8 @@ std::vector<GraphPlane> wall_heading(long bands, double (*heading)(double)) {
 
 TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransition) {
   // Plates every 4 m from 3.5 to 39.5 m: nine compartments, seven even turns, tolerance 0.01
-  // degrees. A circular arc of 300 m with a wander of 0.002 degrees keeps them all (a tighter
-  // one would not: see compartment_bends.h); a transition curve
+  // degrees. A circular arc of 150 m with a wander of 0.002 degrees keeps them all (its even
+  // turns depart by 0.02 degrees along the normal, which does not count); a transition curve
   // (the heading grows as x^2 / (2 R L), R 150 m, L 57 m: 0.054 degrees off an even turn at
   // every plate) keeps none; a transition over the last part keeps those before it.
   std::vector<double> plates;
@@ -106,7 +106,7 @@ TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransi
   const std::vector<std::vector<PlaneBend>> turns = compartment_even_turns(bands_of_kind(0, 44), plates, sigma);
   ASSERT_EQ(turns.size(), 1u);
   ASSERT_EQ(turns[0].size(), 7u);
-  const auto arc = [](double x) { return x / 300.0 + 0.002 * M_PI / 180.0 * std::sin(2.0 * x); };
+  const auto arc = [](double x) { return x / 150.0 + 0.002 * M_PI / 180.0 * std::sin(2.0 * x); };
   const auto transition = [](double x) { return x * x / (2.0 * 150.0 * 57.0); };
   const auto late = [](double x) { return x < 25.5 ? 0.0 : (x - 25.5) * (x - 25.5) / (2.0 * 150.0 * 57.0); };
   EXPECT_EQ(even_turns_where_the_map_turns_evenly(turns, wall_heading(44, arc)).size(), 7u);

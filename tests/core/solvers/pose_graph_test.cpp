@@ -293,6 +293,30 @@ TEST(PoseGraph, AWallTiedAcrossAPlateDoesNotRollThere) {
   EXPECT_LT(tied, 0.01);
 }
 
+TEST(PoseGraph, AnEvenTurnTiedTightlyLeavesATightArcAsItIs) {
+  // Three stretches of a wall on a 150 m curve, 4 m apart (1.53 degrees between them), each
+  // held by its patch, tied to an even turn at 0.001 degrees: they turn evenly already, and
+  // the tie must not pull them straighter (the sum of the normals falls short of the middle
+  // one by 1 - cos(1.53 degrees), 0.02 degrees, along it).
+  const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY();
+  auto turn = [](double deg) { return Eigen::AngleAxisd(deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()); };
+  const double step_deg = 4.0 / 150.0 * 180.0 / M_PI;
+  PoseGraph g;
+  g.poses = {Eigen::Isometry3d::Identity()};
+  g.fixed = {true};
+  const Eigen::Isometry3d I = Eigen::Isometry3d::Identity();
+  for (int k = 0; k < 3; ++k) {
+    g.planes.push_back(GraphPlane{turn(k * step_deg) * Y, 0.0});
+    g.patches.push_back(patch_of(I, 0, k, Eigen::Vector3d::Zero(), turn(k * step_deg) * X, Eigen::Vector3d::UnitZ(), -0.5, 0.5, 0.0, 1.0));
+  }
+  g.bends.push_back({{{0}, {1}, {2}}, {-0.5, 1.0, -0.5}, 0.001 * M_PI / 180.0});
+  const PoseGraphSolution s = solve_pose_graph(g);
+  for (int k = 0; k < 3; ++k) {
+    const double deg = std::atan2(-s.planes[k].normal.x(), s.planes[k].normal.y()) * 180.0 / M_PI;
+    EXPECT_NEAR(deg, k * step_deg, 0.001) << k;
+  }
+}
+
 TEST(PoseGraph, FourStretchesOfAWallTurnAsATransitionCurveDoes) {
   // Four planes of one wall at x = 0, 1, 2 and 3 m. Patches hold the first, third and fourth
   // at 0, 2 and 4.5 degrees: a heading of 0.5 x^2 degrees, as along a transition curve. The
