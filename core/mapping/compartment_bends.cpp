@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <Eigen/Core>
 #include <map>
 
@@ -60,18 +61,18 @@ std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std
   return out;
 }
 
-std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<WallBand>& bands,
-                                                           std::vector<double> plate_stations_m, double sigma_rad) {
+std::vector<std::vector<EvenTurn>> compartment_even_turns(const std::vector<WallBand>& bands,
+                                                          std::vector<double> plate_stations_m, double sigma_rad) {
   std::sort(plate_stations_m.begin(), plate_stations_m.end());
-  std::vector<std::vector<PlaneBend>> out;
+  std::vector<std::vector<EvenTurn>> out;
   for (const auto& [kind, of_kind] : compartments(bands, plate_stations_m)) {
-    std::vector<PlaneBend> turns;
+    std::vector<EvenTurn> turns;
     for (const auto& [k, middle] : of_kind) {
       const auto before = of_kind.find(k - 1), after = of_kind.find(k + 1);
       if (before == of_kind.end() || after == of_kind.end()) continue;
       const double s_a = before->second.station_m(), s_b = middle.station_m(), s_c = after->second.station_m();
       const double weight_c = (s_b - s_a) / (s_c - s_a);
-      turns.push_back({{before->second.planes, middle.planes, after->second.planes}, {weight_c - 1.0, 1.0, -weight_c}, sigma_rad});
+      turns.push_back({k, {{before->second.planes, middle.planes, after->second.planes}, {weight_c - 1.0, 1.0, -weight_c}, sigma_rad}});
     }
     if (!turns.empty()) out.push_back(std::move(turns));
   }
@@ -93,20 +94,19 @@ Eigen::Vector3d departure(const PlaneBend& tie, const std::vector<GraphPlane>& p
 
 }  // namespace
 
-std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<PlaneBend>>& turns,
+std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<EvenTurn>>& turns,
                                                              const std::vector<GraphPlane>& planes) {
-  constexpr int kReach = 2;  // turns either side in the neighbourhood
+  constexpr int kReach = 2;  // compartments either side in the neighbourhood
   std::vector<PlaneBend> out;
-  for (const std::vector<PlaneBend>& of_kind : turns) {
+  for (const std::vector<EvenTurn>& of_kind : turns) {
     std::vector<Eigen::Vector3d> departures;
-    for (const PlaneBend& t : of_kind) departures.push_back(departure(t, planes));
-    const int n = static_cast<int>(of_kind.size());
-    for (int i = 0; i < n; ++i) {
+    for (const EvenTurn& t : of_kind) departures.push_back(departure(t.tie, planes));
+    for (std::size_t i = 0; i < of_kind.size(); ++i) {
       Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-      const int from = std::max(0, i - kReach), to = std::min(n - 1, i + kReach);
-      for (int j = from; j <= to; ++j) sum += departures[static_cast<std::size_t>(j)];
-      if (sum.norm() / (to - from + 1) < of_kind[static_cast<std::size_t>(i)].sigma_rad)
-        out.push_back(of_kind[static_cast<std::size_t>(i)]);
+      int count = 0;
+      for (std::size_t j = 0; j < of_kind.size(); ++j)
+        if (std::abs(of_kind[j].compartment - of_kind[i].compartment) <= kReach) sum += departures[j], ++count;
+      if (sum.norm() / count < of_kind[i].tie.sigma_rad) out.push_back(of_kind[i].tie);
     }
   }
   return out;

@@ -34,19 +34,28 @@ struct WallBand {
 std::vector<PlaneBend> compartment_bends(const std::vector<WallBand>& bands, std::vector<double> plate_stations_m,
                                          double sigma_rad);
 
-// Per kind, in order along the girder: every three neighbouring compartments' even turn (the
-// middle one's mean direction between the outer two's, in proportion to the distances between
-// them), within `sigma_rad`.
-std::vector<std::vector<PlaneBend>> compartment_even_turns(const std::vector<WallBand>& bands,
-                                                           std::vector<double> plate_stations_m, double sigma_rad);
+// An even turn of three neighbouring compartments: the middle one's mean direction between the
+// outer two's, in proportion to the distances between them. `compartment` is the middle one's
+// place along the girder (the number of plates before it).
+struct EvenTurn {
+  int compartment = 0;
+  PlaneBend tie;
+};
 
-// The even turns whose neighbourhood (the turn and the two before and after it, of one kind)
-// departs from an even turn at `planes` (bend_departure, core/solvers/pose_graph.h) by less
-// than the tie's tolerance on average: where the
-// girder's curvature does not change. Along a transition curve the departures share one sign
-// and add up; the odometry's wander, once the quadratic ties hold it, leaves departures of a
-// few thousandths of a degree that change sign.
-std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<PlaneBend>>& turns,
+// Per kind, in order along the girder: every three neighbouring compartments' even turn, within
+// `sigma_rad`.
+std::vector<std::vector<EvenTurn>> compartment_even_turns(const std::vector<WallBand>& bands,
+                                                          std::vector<double> plate_stations_m, double sigma_rad);
+
+// The even turns whose neighbourhood (the turns of one kind whose middle compartment lies at
+// most two compartments from this one's) departs from an even turn at `planes` (bend_departure,
+// core/solvers/pose_graph.h) by less than the tie's tolerance on average: where the girder's
+// curvature does not change. Along a transition curve the departures share one sign and add
+// up; the odometry's wander, once the quadratic ties hold it, leaves departures of a few
+// thousandths of a degree that change sign. The neighbourhood is counted in compartments, not
+// in turns: the turns either side of a compartment whose walls no frame saw lie four
+// compartments apart or more, so it never reaches across one.
+std::vector<PlaneBend> even_turns_where_the_map_turns_evenly(const std::vector<std::vector<EvenTurn>>& turns,
                                                              const std::vector<GraphPlane>& planes);
 
 }  // namespace tunnelmap

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <unordered_map>
@@ -16,6 +17,9 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 constexpr double kMinPlateReachM = 0.05;  // plates nearer than this along the girder are one
+
+// A kind of wall surface: the wall, and its middle plate or its outer surface.
+int surface_kind(const FramePatch& patch) { return patch.wall * 2 + (patch.zone == FramePatch::Zone::Inner ? 1 : 0); }
 
 // The graph solved under the evidence test. The measurements alone (odometry, plates and
 // walls, without the walls' continuity ties) must demand a correction of the given poses
@@ -216,14 +220,16 @@ std::vector<int> StructureSlam::wall_layers(const std::vector<const FramePatch*>
 // lands (a landing held to it misplaced whole walls where frames misjudged their zones).
 void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point) {
   if (!(options_.wall_continuity_m > 0.0)) return;
-  const int kind = patch.wall * 2 + (patch.zone == FramePatch::Zone::Inner ? 1 : 0);
+  const int kind = surface_kind(patch);
   const auto [it, added] = zone_layers_.try_emplace({kind, patch.band}, ZoneLayer{plane, point, patch.station_m});
   if (!added) return;
   // The point between the two, held by the current pose so that it moves with the map.
   auto tie = [&](const ZoneLayer& other, long other_band) {
     if (other.plane == plane || !bands_.plate_between(other_band, patch.band)) return;
     const Eigen::Isometry3d& pose = graph_.poses.back();
-    const Eigen::Vector3d between = pose.inverse() * wall_at_plate(other, ZoneLayer{plane, point, patch.station_m});
+    const ZoneLayer here{plane, point, patch.station_m};
+    const double plate_m = plate_between(other, here);
+    const Eigen::Vector3d between = pose.inverse() * wall_at_plate(other, here, plate_m);
     // A side wall's normal along the world's up is the sine of the girder's cross-fall: the
     // same either side of the plate unless the girder rolls there, however it turns or climbs
     // (a turn about the up leaves it, a climb turns about the normal itself). Against the
@@ -233,6 +239,7 @@ void StructureSlam::continue_wall(const FramePatch& patch, int plane, const Eige
     const Eigen::Vector3d up = pose.linear().transpose() * options_.world_up;
     graph_.continuities.push_back({other.plane, plane, static_cast<int>(groups_.size()) - 1, between,
                                    options_.wall_continuity_m, up, side_wall ? options_.wall_turn_rad : 0.0});
+    tie_crossings_.push_back({patch.wall / 2, plate_m, std::min(other_band, patch.band), std::max(other_band, patch.band)});
   };
   auto near = [&](long other_band) {  // the unseen stretch between the two bands
     const long first = std::min(other_band, patch.band), last = std::max(other_band, patch.band);
@@ -253,7 +260,7 @@ std::vector<PlaneBend> StructureSlam::turn_ties() const {
   return compartment_bends(wall_bands(), cuts_m_, options_.compartment_turn_rad);
 }
 
-std::vector<std::vector<PlaneBend>> StructureSlam::even_turns() const {
+std::vector<std::vector<EvenTurn>> StructureSlam::even_turns() const {
   return compartment_even_turns(wall_bands(), cuts_m_, options_.compartment_turn_rad);
 }
 
@@ -300,12 +307,50 @@ void StructureSlam::cut_bands_at_plates() {
 // two planes that meet at an angle agree on their distance from a point only where they meet;
 // the midpoint of two points seen at different distances from the plate would see the turn
 // as a step (a 1.5 degree kink and points 1 m and 3 m from the plate: 26 mm).
-Eigen::Vector3d StructureSlam::wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const {
-  const double lo = std::min(a.station_m, b.station_m), hi = std::max(a.station_m, b.station_m);
-  const double plate = plates_.nearest_within(lo, hi, 0.5 * (lo + hi));
-  if (std::isnan(plate) || !(hi - lo > 0.0)) return 0.5 * (a.point + b.point);
-  const double t = (plate - a.station_m) / (b.station_m - a.station_m);
+Eigen::Vector3d StructureSlam::wall_at_plate(const ZoneLayer& a, const ZoneLayer& b, double plate_m) const {
+  if (std::isnan(plate_m) || !(std::abs(b.station_m - a.station_m) > 0.0)) return 0.5 * (a.point + b.point);
+  const double t = (plate_m - a.station_m) / (b.station_m - a.station_m);
   return a.point + t * (b.point - a.point);
+}
+
+// The tracked plate between two stretches of wall nearest their middle; NaN if none.
+double StructureSlam::plate_between(const ZoneLayer& a, const ZoneLayer& b) const {
+  const double lo = std::min(a.station_m, b.station_m), hi = std::max(a.station_m, b.station_m);
+  return plates_.nearest_within(lo, hi, 0.5 * (lo + hi));
+}
+
+// A girder's section may change at a diaphragm: past the plate the roof rises, or the floor
+// drops. Its walls then do not run on through the plate, and the ties of two opposite walls
+// disagree by the change. Where the section the frames measured on either side (each frame
+// its own: core/mapping/section_sizes.h) changes by more than the two ties' tolerance allows,
+// neither wall of the pair, at either zone, is held at its distance across that plate: which
+// one stepped only frames that see across the plate can tell, and they need no tie. Held
+// together, the two ties split the change between the walls and pull the map beyond the
+// plate with it (`PoseRefinement.ARoofThatRisesPastAPlateIsNotTiedToTheRoofBeforeIt`). A side
+// wall keeps its roll tie: a wider section does not roll.
+void StructureSlam::free_ties_across_section_changes() {
+  constexpr double kChangeSigmas = 3.0;
+  constexpr double kSamePlateM = 0.5;  // plates lie metres apart; one plate's estimate moves by centimetres
+  assert(tie_crossings_.size() == graph_.continuities.size());
+  const double limit = kChangeSigmas * std::sqrt(2.0) * options_.wall_continuity_m;
+  const auto same_crossing = [&](const TieCrossing& a, const TieCrossing& b) {
+    return a.dimension == b.dimension && std::abs(a.plate_m - b.plate_m) < kSamePlateM;
+  };
+  std::vector<PlaneContinuity> kept;
+  std::vector<TieCrossing> kept_crossings;
+  for (std::size_t i = 0; i < tie_crossings_.size(); ++i) {
+    // The bands either side of the plate that this tie and the others of its dimension there name.
+    std::vector<long> before, after;
+    for (const TieCrossing& other : tie_crossings_)
+      if (same_crossing(tie_crossings_[i], other)) before.push_back(other.before), after.push_back(other.after);
+    PlaneContinuity c = graph_.continuities[i];
+    if (std::abs(section_sizes_.change(tie_crossings_[i].dimension, before, after, limit)) > limit) c.sigma_m = 0.0;
+    if (!(c.sigma_m > 0.0) && !(c.sigma_rad > 0.0)) continue;
+    kept.push_back(c);
+    kept_crossings.push_back(tie_crossings_[i]);
+  }
+  graph_.continuities.swap(kept);
+  tie_crossings_.swap(kept_crossings);
 }
 
 void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& offset) {
@@ -334,6 +379,7 @@ void StructureSlam::add_patches(const TunnelMap& map, const FrameWalls& walls, c
     patches.push_back(wall);
     planes.push_back(-1);
   }
+  section_sizes_.record(patches);
   for (int pair = 0; pair < 4; pair += 2) {  // left and right, top and bottom
     std::vector<const FramePatch*> on_wall;
     std::vector<std::size_t> index;
@@ -485,6 +531,7 @@ PoseRefinement StructureSlam::finish() {
   const auto t0 = std::chrono::steady_clock::now();
   PoseRefinement out;
   if (groups_.empty()) return out;
+  free_ties_across_section_changes();
   graph_.bends = turn_ties();
   PoseGraphSolution s = solve_under_evidence(
       graph_, {}, static_cast<int>(groups_.size()) - 1, options_.correction_sigmas,

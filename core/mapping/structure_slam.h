@@ -24,6 +24,7 @@
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/plate_tracks.h"
 #include "core/mapping/pose_refinement.h"
+#include "core/mapping/section_sizes.h"
 #include "core/mapping/slam_options.h"
 #include "core/mapping/slam_patches.h"
 #include "core/mapping/wall_band_grid.h"
@@ -95,10 +96,22 @@ class StructureSlam {
   ZoneLayers zone_layers_;
   void continue_wall(const FramePatch& patch, int plane, const Eigen::Vector3d& point);
   std::vector<PlaneBend> turn_ties() const;
-  std::vector<std::vector<PlaneBend>> even_turns() const;
+  std::vector<std::vector<EvenTurn>> even_turns() const;
   std::vector<WallBand> wall_bands() const;
   PoseGraphSolution with_even_turns(const PoseGraphSolution& tied) const;
-  Eigen::Vector3d wall_at_plate(const ZoneLayer& a, const ZoneLayer& b) const;
+  Eigen::Vector3d wall_at_plate(const ZoneLayer& a, const ZoneLayer& b, double plate_m) const;
+  double plate_between(const ZoneLayer& a, const ZoneLayer& b) const;
+  // Per continuity tie (graph_.continuities, in order): its wall's dimension (0 width, 1
+  // height), the plate it crosses (NaN: none tracked between its two points) and its bands
+  // before and after it.
+  struct TieCrossing {
+    int dimension;
+    double plate_m;
+    long before, after;
+  };
+  std::vector<TieCrossing> tie_crossings_;
+  SectionSizes section_sizes_;
+  void free_ties_across_section_changes();
   PlateTracks plates_;
   // The wall bands, cut at the plates (core/mapping/wall_band_grid.h).
   void cut_bands_at_plates();

@@ -134,9 +134,11 @@ void add_continuity(ceres::Problem& problem, const PlaneContinuity& c, double ro
   PoseBlock& pose = poses[static_cast<std::size_t>(c.pose)];
   PlaneBlock& a = planes[static_cast<std::size_t>(c.a)];
   PlaneBlock& b = planes[static_cast<std::size_t>(c.b)];
-  auto* cost = new ceres::AutoDiffCostFunction<ContinuityResidual, 1, 4, 3, 3, 1, 3, 1>(
-      new ContinuityResidual{c.point, a.anchor, b.anchor, 1.0 / c.sigma_m});
-  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, a.n, a.d, b.n, b.d);
+  if (c.sigma_m > 0.0) {
+    auto* cost = new ceres::AutoDiffCostFunction<ContinuityResidual, 1, 4, 3, 3, 1, 3, 1>(
+        new ContinuityResidual{c.point, a.anchor, b.anchor, 1.0 / c.sigma_m});
+    problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q, pose.t, a.n, a.d, b.n, b.d);
+  }
   if (!(c.sigma_rad > 0.0)) return;
   auto* turn = new ceres::AutoDiffCostFunction<TurnResidual, 1, 4, 3, 3>(new TurnResidual{c.across, 1.0 / c.sigma_rad});
   problem.AddResidualBlock(turn, new ceres::HuberLoss(robust_sigmas), pose.q, a.n, b.n);

@@ -46,7 +46,7 @@ struct PlaneContinuity {
   int a = 0, b = 0;
   int pose = 0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();  // in the pose's frame
-  double sigma_m = 0.002;
+  double sigma_m = 0.002;                           // 0: distances free (directions alone tied)
   Eigen::Vector3d across = Eigen::Vector3d::Zero();  // in the pose's frame
   double sigma_rad = 0.0;                            // 0: directions free
 };

@@ -72,10 +72,11 @@ TEST(CompartmentBends, EachKindOfWallIsTiedToItselfAndACompartmentNotSeenBreaksT
 TEST(CompartmentBends, AnEvenTurnPutsTheMiddleOfThreeCompartmentsBetweenTheOthers) {
   // Plates at 1, 3, 7 and 13 m, each where a band begins: the compartments hold bands 1-2, 3-6
   // and 7-12, at 2, 5 and 10 m: the middle one lies 3/8 of the way.
-  const std::vector<std::vector<PlaneBend>> turns = compartment_even_turns(bands_of_kind(0, 14), {1.0, 3.0, 7.0, 13.0}, 0.001);
+  const std::vector<std::vector<EvenTurn>> turns = compartment_even_turns(bands_of_kind(0, 14), {1.0, 3.0, 7.0, 13.0}, 0.001);
   ASSERT_EQ(turns.size(), 1u);
   ASSERT_EQ(turns[0].size(), 1u);
-  const PlaneBend& t = turns[0][0];
+  EXPECT_EQ(turns[0][0].compartment, 2);
+  const PlaneBend& t = turns[0][0].tie;
   EXPECT_EQ(t.stretches[0], (std::vector<int>{101, 102}));
   EXPECT_EQ(t.stretches[1], (std::vector<int>{103, 104, 105, 106}));
   ASSERT_EQ(t.weights.size(), 3u);
@@ -103,7 +104,7 @@ TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransi
   std::vector<double> plates;
   for (double x = 3.5; x < 40.0; x += 4.0) plates.push_back(x);
   const double sigma = 0.01 * M_PI / 180.0;
-  const std::vector<std::vector<PlaneBend>> turns = compartment_even_turns(bands_of_kind(0, 44), plates, sigma);
+  const std::vector<std::vector<EvenTurn>> turns = compartment_even_turns(bands_of_kind(0, 44), plates, sigma);
   ASSERT_EQ(turns.size(), 1u);
   ASSERT_EQ(turns[0].size(), 7u);
   const auto arc = [](double x) { return x / 150.0 + 0.002 * M_PI / 180.0 * std::sin(2.0 * x); };
@@ -114,7 +115,30 @@ TEST(CompartmentBends, TheEvenTurnIsTiedWhereTheMapTurnsEvenlyAndNotAlongATransi
   const std::vector<PlaneBend> kept = even_turns_where_the_map_turns_evenly(turns, wall_heading(44, late));
   ASSERT_FALSE(kept.empty());
   EXPECT_LT(kept.size(), 7u);
-  EXPECT_EQ(kept[0].stretches[1], turns[0][0].stretches[1]);
+  EXPECT_EQ(kept[0].stretches[1], turns[0][0].tie.stretches[1]);
+}
+
+TEST(CompartmentBends, AnEvenTurnsNeighbourhoodDoesNotReachPastACompartmentNoFrameSaw) {
+  // Plates every 4 m from 3.5 to 39.5 m; no wall seen between 15.5 and 19.5 m (compartment 4).
+  // The even turns left are those about compartments 2, 6, 7 and 8. A transition from 21.5 m on
+  // puts 6, 7 and 8 0.054 degrees off an even turn; compartment 2, on the straight, keeps its
+  // tie: its neighbourhood (two compartments either side) holds no other turn. Counted by
+  // place in the list it held those about 6 and 7, beyond the gap, and lost it.
+  std::vector<double> plates;
+  for (double x = 3.5; x < 40.0; x += 4.0) plates.push_back(x);
+  std::vector<WallBand> bands;
+  for (const WallBand& b : bands_of_kind(0, 44))
+    if (b.from_m < 16.0 || b.from_m > 18.0) bands.push_back(b);
+  const double sigma = 0.01 * M_PI / 180.0;
+  const std::vector<std::vector<EvenTurn>> turns = compartment_even_turns(bands, plates, sigma);
+  ASSERT_EQ(turns.size(), 1u);
+  std::vector<int> middles;
+  for (const EvenTurn& t : turns[0]) middles.push_back(t.compartment);
+  EXPECT_EQ(middles, (std::vector<int>{2, 6, 7, 8}));
+  const auto late = [](double x) { return x < 21.5 ? 0.0 : (x - 21.5) * (x - 21.5) / (2.0 * 150.0 * 57.0); };
+  const std::vector<PlaneBend> kept = even_turns_where_the_map_turns_evenly(turns, wall_heading(44, late));
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_EQ(kept[0].stretches[1], turns[0][0].tie.stretches[1]);
 }
 
 TEST(CompartmentBends, NoFourCompartmentsNoTies) {
