@@ -336,15 +336,26 @@ void StructureSlam::free_ties_across_section_changes() {
   const auto same_crossing = [&](const TieCrossing& a, const TieCrossing& b) {
     return a.dimension == b.dimension && std::abs(a.plate_m - b.plate_m) < kSamePlateM;
   };
-  std::vector<PlaneContinuity> kept;
-  std::vector<TieCrossing> kept_crossings;
+  // Per tie: whether the section changes where it crosses, judged once per crossing (by its
+  // first tie) over the bands either side that all the crossing's ties name.
+  std::vector<bool> changes(tie_crossings_.size(), false);
   for (std::size_t i = 0; i < tie_crossings_.size(); ++i) {
-    // The bands either side of the plate that this tie and the others of its dimension there name.
+    const auto first = std::find_if(tie_crossings_.begin(), tie_crossings_.end(),
+                                    [&](const TieCrossing& t) { return same_crossing(tie_crossings_[i], t); });
+    if (const auto j = static_cast<std::size_t>(first - tie_crossings_.begin()); j < i) {
+      changes[i] = changes[j];
+      continue;
+    }
     std::vector<long> before, after;
     for (const TieCrossing& other : tie_crossings_)
       if (same_crossing(tie_crossings_[i], other)) before.push_back(other.before), after.push_back(other.after);
+    changes[i] = std::abs(section_sizes_.change(tie_crossings_[i].dimension, before, after, limit)) > limit;
+  }
+  std::vector<PlaneContinuity> kept;
+  std::vector<TieCrossing> kept_crossings;
+  for (std::size_t i = 0; i < tie_crossings_.size(); ++i) {
     PlaneContinuity c = graph_.continuities[i];
-    if (std::abs(section_sizes_.change(tie_crossings_[i].dimension, before, after, limit)) > limit) c.sigma_m = 0.0;
+    if (changes[i]) c.sigma_m = 0.0;
     if (!(c.sigma_m > 0.0) && !(c.sigma_rad > 0.0)) continue;
     kept.push_back(c);
     kept_crossings.push_back(tie_crossings_[i]);
