@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
+#include "core/evaluation/joint_sightings.h"
 #include "core/io/dataset.h"
 #include "core/mapping/dataset_mapping.h"
 #include "core/pipeline/pipeline.h"
@@ -28,6 +30,20 @@ nlohmann::json distribution(std::vector<double> v) {
 
 void append(std::vector<double>& to, const std::vector<double>& from) { to.insert(to.end(), from.begin(), from.end()); }
 
+nlohmann::json count_or_null(const std::optional<int>& n) { return n ? nlohmann::json(*n) : nlohmann::json(nullptr); }
+nlohmann::json metres_or_null(double m) { return std::isnan(m) ? nlohmann::json(nullptr) : nlohmann::json(std::round(m * 1000) / 1000); }
+
+// Per true joint: its station and the nearest stations either side where frames saw the walls
+// that step there (null: none saw them).
+nlohmann::json joint_sightings_json(const GirderScore& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < s.joint_seen_before_m.size() && k < s.joint_station_m.size(); ++k)
+    out.push_back({{"station_m", metres_or_null(s.joint_station_m[k])},
+                   {"seen_before_m", metres_or_null(s.joint_seen_before_m[k])},
+                   {"seen_after_m", metres_or_null(s.joint_seen_after_m[k])}});
+  return out;
+}
+
 GirderResult run_one(const GirderDraw& draw, const GirderProtocolOptions& o) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::path(o.work_dir) / ("girder-" + std::to_string(draw.index));
@@ -46,6 +62,7 @@ GirderResult run_one(const GirderDraw& draw, const GirderProtocolOptions& o) {
   r.draw = draw;
   r.frames = static_cast<int>(ds.frames.size());
   r.score = score_girder(dm, ds.ground_truth, ds.raw["frames"]);
+  score_joint_sightings(ds, GirderScoringOptions{}, r.score);
   fs::remove_all(dir);
   return r;
 }
@@ -63,6 +80,9 @@ nlohmann::json girder_json(const GirderResult& r) {
           {"sections", {{"true", s.sections_true}, {"found", s.sections_found}, {"phantom", s.phantom_sections}}},
           {"joints",
            {{"true", s.joints_true}, {"found", s.joints_found}, {"within_stated_uncertainty", s.joints_within_stated},
+            {"seen_within_tolerance", count_or_null(s.joints_seen)},
+            {"found_of_seen", count_or_null(s.joints_found_of_seen)},
+            {"sightings", joint_sightings_json(s)},
             {"error_mm", distribution(s.joint_error_mm)}}},
           {"plates",
            {{"true", s.plates_true}, {"within_tolerance", s.plates_matched}, {"missed", s.plates_missed},
@@ -87,6 +107,7 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
   std::vector<double> w, h, joint, plate, mw, mh, corr_mm, corr_deg, pose_mm, pose_deg, along, across, vertical, ms;
   int girders = 0, constant = 0, phantom = 0, joints = 0, joints_found = 0, joints_stated = 0, plates = 0, matched = 0,
       missed = 0, invented = 0, unmeasured = 0, kept = 0, refined = 0;
+  std::optional<int> seen, found_of_seen;  // over the girders whose sightings were taken
   for (const GirderResult& r : results) {
     if (r.draw.drifted != drifted) continue;
     const GirderScore& s = r.score;
@@ -101,6 +122,7 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
     if (s.poses_kept) ++refined, kept += *s.poses_kept ? 1 : 0;
     if (r.draw.constant_section) ++constant, phantom += s.phantom_sections > 0 ? 1 : 0;
     joints += s.joints_true, joints_found += s.joints_found, joints_stated += s.joints_within_stated;
+    if (s.joints_seen) seen = seen.value_or(0) + *s.joints_seen, found_of_seen = found_of_seen.value_or(0) + *s.joints_found_of_seen;
     append(joint, s.joint_error_mm);
     plates += s.plates_true, matched += s.plates_matched, missed += s.plates_missed;
     invented += s.plates_invented, unmeasured += s.manholes_unmeasured;
@@ -112,6 +134,7 @@ nlohmann::json family(const std::vector<GirderResult>& results, bool drifted) {
           {"girders_with_phantom_sections", phantom},
           {"joints",
            {{"true", joints}, {"found", joints_found}, {"within_stated_uncertainty", joints_stated},
+            {"seen_within_tolerance", count_or_null(seen)}, {"found_of_seen", count_or_null(found_of_seen)},
             {"error_mm", distribution(joint)}}},
           {"plates", {{"true", plates}, {"within_tolerance", matched}, {"missed", missed}, {"invented", invented},
                       {"error_mm", distribution(plate)}}},
@@ -211,6 +234,13 @@ std::string girders_markdown(const nlohmann::json& report) {
   row("joints found within 0.2 m", joints(e, "found"), joints(d, "found"));
   row("joints within the uncertainty the map states", joints(e, "within_stated_uncertainty"),
       joints(d, "within_stated_uncertainty"));
+  // Joints whose stepping walls frames saw within 0.2 m either side: "found N of M".
+  const auto seen = [](const nlohmann::json& f) {
+    const nlohmann::json& j = f["joints"];
+    if (j["seen_within_tolerance"].is_null()) return std::string("–");
+    return std::to_string(j["found_of_seen"].get<int>()) + " of " + std::to_string(j["seen_within_tolerance"].get<int>());
+  };
+  row("joints found within 0.2 m, of those the frames saw within 0.2 m", seen(e), seen(d));
   row("joint position (mm)", cell(e["joints"]["error_mm"]), cell(d["joints"]["error_mm"]));
   const auto plates = [](const nlohmann::json& f) {
     const nlohmann::json& p = f["plates"];

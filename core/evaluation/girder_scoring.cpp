@@ -7,44 +7,11 @@
 #include <limits>
 #include <optional>
 
+#include "core/evaluation/truth_line.h"
+
 namespace tunnelmap {
 
 namespace {
-
-Eigen::Vector3d vec3(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
-
-// Truth stations of world points: the nearest point of the truth centre line, refined along it.
-class TruthLine {
- public:
-  explicit TruthLine(const nlohmann::json& line) {
-    for (const auto& p : line) s_.push_back(p["station_m"].get<double>()), x_.push_back(vec3(p["point"]));
-  }
-  double station_of(const Eigen::Vector3d& p) const {
-    if (x_.size() < 2) return s_.empty() ? 0.0 : s_[0];
-    const std::size_t best = nearest(p);
-    return s_[best] + direction_near(best).dot(p - x_[best]);
-  }
-  // The centre line's direction at its point nearest `p` (world x when it has one point).
-  Eigen::Vector3d direction_at(const Eigen::Vector3d& p) const {
-    return x_.size() < 2 ? Eigen::Vector3d::UnitX() : direction_near(nearest(p));
-  }
-
- private:
-  std::size_t nearest(const Eigen::Vector3d& p) const {
-    std::size_t best = 0;
-    double d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < x_.size(); ++i)
-      if (const double d = (x_[i] - p).squaredNorm(); d < d2) d2 = d, best = i;
-    return best;
-  }
-  Eigen::Vector3d direction_near(std::size_t i) const {
-    const std::size_t a = i == 0 ? 0 : i - 1, b = std::min(x_.size() - 1, i + 1);
-    return (x_[b] - x_[a]).normalized();
-  }
-
-  std::vector<double> s_;
-  std::vector<Eigen::Vector3d> x_;
-};
 
 // A point the map placed, in its truth station: moved by the alignment first.
 struct MapInTruth {
@@ -95,7 +62,11 @@ void score_sections(const StationMap& m, const MapInTruth& line, const std::vect
   g.sections_true = static_cast<int>(truth_joints.size()) + 1;
   g.sections_found = static_cast<int>(m.sections.size());
   g.joints_true = static_cast<int>(truth_joints.size());
-  for (double j : truth_joints) g.joints_found += near_any(j, found, o.joint_tolerance_m) ? 1 : 0;
+  for (double j : truth_joints) {
+    g.joint_station_m.push_back(j);
+    g.joint_found.push_back(near_any(j, found, o.joint_tolerance_m));
+    g.joints_found += g.joint_found.back() ? 1 : 0;
+  }
   for (double j : truth_joints) {
     if (found.empty()) break;
     const auto nearest = std::min_element(found.begin(), found.end(),

@@ -26,6 +26,13 @@ struct GirderScore {
   int sections_true = 0, sections_found = 0;
   int phantom_sections = 0;          // sections the truth does not have
   int joints_true = 0, joints_found = 0;  // joints found within joint_tolerance_m
+  std::vector<double> joint_station_m;    // per true joint: its truth station
+  std::vector<bool> joint_found;          // per true joint: found within joint_tolerance_m
+  // True joints whose stepping walls the frames saw within joint_tolerance_m on both sides (the
+  // rest lie in a stretch no frame saw: core/evaluation/joint_sightings.h), and of those, how
+  // many were found; unset when the sightings were not taken.
+  std::optional<int> joints_seen, joints_found_of_seen;
+  std::vector<double> joint_seen_before_m, joint_seen_after_m;  // per true joint, when taken; NaN unseen
   // Per true joint, the nearest joint the map placed (signed, mm along the truth's centre line),
   // and how many of those lie within the uncertainty the map stated for them.
   std::vector<double> joint_error_mm;

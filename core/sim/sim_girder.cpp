@@ -5,13 +5,24 @@
 
 namespace tunnelmap::sim {
 
+std::optional<double> manhole_plate_x(const SimConfig& c) {
+  // The plate is fixed in the world; cameras stand `distance` in front of it.
+  if (c.distance_to_manhole_m) return *c.distance_to_manhole_m;
+  if (c.manhole_distances_m.empty()) return std::nullopt;
+  return *std::max_element(c.manhole_distances_m.begin(), c.manhole_distances_m.end());
+}
+
 std::vector<double> diaphragm_stations(const SimConfig& c) {
   std::vector<double> x = c.diaphragm_x_m;
-  if (!(c.diaphragm_spacing_m > 0.0) || !c.girder_length_m) return x;
-  const double S = c.diaphragm_spacing_m, L = *c.girder_length_m;
-  // Diaphragms stand evenly spaced from the start; a last bay shorter than half the spacing
-  // is not built (the end bay takes it), so no diaphragm stands a hand's width before the end.
-  for (int k = 1; k * S <= L - 0.5 * S + 1e-9; ++k) x.push_back(k * S);
+  if (c.diaphragm_spacing_m > 0.0 && c.girder_length_m) {
+    const double S = c.diaphragm_spacing_m, L = *c.girder_length_m;
+    // Diaphragms stand evenly spaced from the start; a last bay shorter than half the spacing
+    // is not built (the end bay takes it), so no diaphragm stands a hand's width before the end.
+    for (int k = 1; k * S <= L - 0.5 * S + 1e-9; ++k) x.push_back(k * S);
+  }
+  if (const std::optional<double> manhole = manhole_plate_x(c))
+    x.erase(std::remove_if(x.begin(), x.end(), [&](double d) { return std::abs(d - *manhole) < kMinPlateGapM; }),
+            x.end());
   std::sort(x.begin(), x.end());
   x.erase(std::unique(x.begin(), x.end(), [](double a, double b) { return b - a < 1e-3; }), x.end());
   return x;

@@ -1,16 +1,26 @@
 #pragma once
 // Whole-girder helpers of the simulator: where the diaphragms are and what passes through
 // their manhole openings (docs/simulator.md#long-girders).
+#include <optional>
 #include <vector>
 
 #include "core/sim/sim_config.h"
 
 namespace tunnelmap::sim {
 
+// World X of the manhole plate (the plate the approach frames stand in front of): the distance
+// to the manhole, else the farthest of the manhole distances; none without either.
+std::optional<double> manhole_plate_x(const SimConfig& config);
+
 // Stations of the diaphragms: diaphragm_x_m in the order given; with diaphragm_spacing_m also
 // S, 2S, ... short of girder_length_m, and then the union is sorted (duplicates within 1 mm
-// dropped).
+// dropped). None stands within kMinPlateGapM of the manhole plate: that plate is the diaphragm
+// there.
 std::vector<double> diaphragm_stations(const SimConfig& config);
+
+// Two transverse plates a few centimetres apart are built nowhere (the gap could be neither
+// welded nor inspected); a diaphragm that would stand so near the manhole plate is left out.
+constexpr double kMinPlateGapM = 0.1;
 
 // A point of a plate, (dy, dz) from the opening's centre across and up the section, is in the
 // manhole opening (strictly inside its ellipse or rounded rectangle).

@@ -37,12 +37,7 @@ std::uint8_t to_byte(double v) {
 
 }  // namespace
 
-std::optional<double> TunnelSimulator::compute_manhole_x(const SimConfig& c) {
-  // The plate is fixed in the world; cameras stand `distance` in front of it.
-  if (c.distance_to_manhole_m) return *c.distance_to_manhole_m;
-  if (c.manhole_distances_m.empty()) return std::nullopt;
-  return *std::max_element(c.manhole_distances_m.begin(), c.manhole_distances_m.end());
-}
+std::optional<double> TunnelSimulator::compute_manhole_x(const SimConfig& c) { return sim::manhole_plate_x(c); }
 
 std::optional<double> TunnelSimulator::compute_end_x(const SimConfig& c) {
   if (c.girder_length_m) return *c.girder_length_m;

@@ -123,12 +123,21 @@ TEST(GirderProtocol, ASmallFamilyMeetsTheStationPlateAndManholeBounds) {
       EXPECT_LE(f["pose_error_mm"]["mean"].get<double>(), 30.0);
       EXPECT_LE(f["pose_error_deg"]["p95"].get<double>(), 1.0);
     }
+    // Joints the frames saw within 0.2 m either side: counted for every girder (all simulated
+    // girders carry labels), and found within 0.2 m at least as often as the joints overall.
+    const nlohmann::json& j = f["joints"];
+    ASSERT_TRUE(j["seen_within_tolerance"].is_number()) << kind;
+    EXPECT_LE(j["seen_within_tolerance"].get<int>(), j["true"].get<int>()) << kind;
+    EXPECT_LE(j["found_of_seen"].get<int>(), j["seen_within_tolerance"].get<int>()) << kind;
+    EXPECT_LE(j["true"].get<int>() - j["found"].get<int>(),
+              j["true"].get<int>() - j["found_of_seen"].get<int>()) << kind;
     EXPECT_LE(f["manhole_width_error_mm"]["worst"].get<double>(), 15.0) << kind;
     EXPECT_LE(f["manhole_height_error_mm"]["worst"].get<double>(), 15.0) << kind;
   }
   EXPECT_FALSE(std::filesystem::exists(tmp.file("work/girder-0")));  // datasets removed
   const std::string md = girders_markdown(report);
   EXPECT_NE(md.find("| station width error (mm) |"), std::string::npos);
+  EXPECT_NE(md.find("| joints found within 0.2 m, of those the frames saw within 0.2 m |"), std::string::npos);
 }
 
 TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesABadCount) {

@@ -24,6 +24,7 @@
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/build_paths.h"
 #include "core/util/error.h"
+#include "tests/support/girder_walk_config.h"
 
 namespace tunnelmap {
 namespace {
@@ -241,31 +242,29 @@ TEST(SimDriftTest, CliDriftFlag) {
 // ---------------------------------------------------------------------------------------------
 // Long girders, diaphragms and manholes
 
-// A girder of `length` metres with diaphragms every `spacing` metres, one stop per frame from
-// 0.5 m to L - 0.5 m through the manholes (what `simulate --girder L --diaphragm-spacing S` does).
-SimConfig girder_config(double length, double spacing, int frames) {
-  SimConfig c = SimConfig::from_preset("field");
-  c.manhole_distances_m.clear();
-  c.girder_length_m = length;
-  c.diaphragm_spacing_m = spacing;
-  c.frames = frames;
-  SimWalk w;
-  w.start_x_m = 0.5;
-  w.end_x_m = length - 0.5;
-  w.stops = frames;
-  w.pose = SimCameraPose{0.0, 0.5, 0.0, 0.0, 0.0};
-  w.through_openings = true;
-  c.walk = w;
-  return c;
+TEST(SimGirderTest, NoDiaphragmStandsWithinATenthOfAMetreOfTheManholePlate) {
+  // The approach's manhole plate at 5 m is the diaphragm there: at a 4.96 m spacing the
+  // diaphragm 4 cm before it is not built; at 4.8 m the two stand 20 cm apart, both built.
+  SimConfig c = testing::girder_walk_config(30.0, 4.96, 10);
+  c.manhole_distances_m = {5.0, 3.0, 1.8};
+  std::vector<double> x = TunnelSimulator(c).diaphragms_x();
+  ASSERT_EQ(x.size(), 5u);
+  EXPECT_DOUBLE_EQ(x[0], 5.0);
+  EXPECT_NEAR(x[1], 2 * 4.96, 1e-9);
+  c.diaphragm_spacing_m = 4.8;
+  x = TunnelSimulator(c).diaphragms_x();
+  ASSERT_EQ(x.size(), 6u);
+  EXPECT_NEAR(x[0], 4.8, 1e-9);
+  EXPECT_DOUBLE_EQ(x[1], 5.0);
 }
 
 TEST(SimGirderTest, NoDiaphragmStandsWithinHalfASpacingOfTheEndWall) {
   // 30.5 m at 3.79 m: 8 x 3.79 = 30.32 would leave an 18 cm bay; the end bay takes it.
-  std::vector<double> x = TunnelSimulator(girder_config(30.5, 3.79, 10)).diaphragms_x();
+  std::vector<double> x = TunnelSimulator(testing::girder_walk_config(30.5, 3.79, 10)).diaphragms_x();
   ASSERT_EQ(x.size(), 7u);
   EXPECT_NEAR(x.back(), 7 * 3.79, 1e-9);
   // 30.5 m at 3.2 m: 9 x 3.2 = 28.8 leaves 1.7 m, more than half a spacing: built.
-  x = TunnelSimulator(girder_config(30.5, 3.2, 10)).diaphragms_x();
+  x = TunnelSimulator(testing::girder_walk_config(30.5, 3.2, 10)).diaphragms_x();
   ASSERT_EQ(x.size(), 9u);
   EXPECT_NEAR(x.back(), 28.8, 1e-9);
 }
@@ -280,7 +279,7 @@ std::string wall_of(const TunnelSimulator& sim, int id) {
 }
 
 TEST(SimGirderTest, DiaphragmsEverySpacingAlongALongGirder) {
-  const TunnelSimulator sim(girder_config(100.0, 4.0, 50));
+  const TunnelSimulator sim(testing::girder_walk_config(100.0, 4.0, 50));
   const std::vector<double> x = sim.diaphragms_x();
   ASSERT_EQ(x.size(), 24u);
   for (std::size_t i = 0; i < x.size(); ++i) EXPECT_DOUBLE_EQ(x[i], 4.0 * (i + 1));
@@ -306,7 +305,7 @@ TEST(SimGirderTest, DiaphragmsEverySpacingAlongALongGirder) {
 }
 
 TEST(SimGirderTest, RoundedRectangleLetsRaysThroughItsCornersWhereAnEllipseDoesNot) {
-  SimConfig c = girder_config(12.0, 4.0, 4);
+  SimConfig c = testing::girder_walk_config(12.0, 4.0, 4);
   c.manhole_width_m = 0.60;
   c.manhole_height_m = 0.80;
   c.manhole_centre_z_rel = 0.45;
@@ -341,7 +340,7 @@ TEST(SimGirderTest, RoundedRectangleLetsRaysThroughItsCornersWhereAnEllipseDoesN
 }
 
 TEST(SimGirderTest, WalkThroughTheManholesCentresTheCameraOnEachPlate) {
-  SimConfig c = girder_config(12.0, 4.0, 23);  // stops every 0.5 m from 0.5 to 11.5
+  SimConfig c = testing::girder_walk_config(12.0, 4.0, 23);  // stops every 0.5 m from 0.5 to 11.5
   c.walk->pose = SimCameraPose{0.2, 0.85, 0.0, -5.0, 0.0};
   c.manhole_centre_z_rel = 0.42;
   c.jitter_translation_m = 0.0;
@@ -374,7 +373,7 @@ TEST(SimGirderTest, WalkThroughTheManholesCentresTheCameraOnEachPlate) {
 // Ground truth of the girder
 
 TEST(SimGirderTest, GroundTruthListsCentrelineDiaphragmsAndCompartments) {
-  SimConfig c = girder_config(12.0, 4.0, 3);
+  SimConfig c = testing::girder_walk_config(12.0, 4.0, 3);
   c.manhole_shape = "rounded_rectangle";
   c.manhole_corner_radius_m = 0.08;
   const fs::path dir = fresh_dir("truth");
@@ -461,7 +460,7 @@ TruthOffset truth_offset(const json& line, double cross_fall_deg, const Eigen::V
 }
 
 SimConfig curved_config(int frames) {
-  SimConfig c = girder_config(16.0, 4.0, frames);
+  SimConfig c = testing::girder_walk_config(16.0, 4.0, frames);
   c.curve_radius_m = 150.0;
   c.gradient_pct = 4.0;
   c.cross_fall_deg = 3.0;
@@ -544,7 +543,7 @@ Chord chord(const json& line, double from_m, double to_m) {
 TEST(SimGirderTest, ATransitionCurveAndAVerticalCurveBendTheGirderAsDesigned) {
   // Straight to 6 m, then a 12 m transition into a 150 m curve to the right; the gradient
   // falls from +2 % by 0.1 % per metre (a crest, R = 1000 m). Plates every 4 m are joints.
-  SimConfig c = exact(girder_config(30.0, 4.0, 3));
+  SimConfig c = exact(testing::girder_walk_config(30.0, 4.0, 3));
   c.curve_radius_m = -150.0;
   c.transition_start_m = 6.0;
   c.transition_m = 12.0;
@@ -578,7 +577,7 @@ TEST(SimGirderTest, DiaphragmTruthMatchesTheRenderedPlate) {
   // Straight and curved: the pixels of each diaphragm lie on its truth plane, at its station,
   // and the pixels seen through the opening are inside the truth opening.
   for (const bool curved : {false, true}) {
-    SimConfig c = exact(curved ? curved_config(4) : girder_config(16.0, 4.0, 4));
+    SimConfig c = exact(curved ? curved_config(4) : testing::girder_walk_config(16.0, 4.0, 4));
     c.manhole_shape = "rounded_rectangle";
     c.manhole_centre_z_rel = 0.45;
     c.walk->start_x_m = 1.0;  // stops at 1, 5.8, 10.7: 1.3-3 m before a plate; 15.5: the end
@@ -626,7 +625,7 @@ TEST(SimGirderTest, DiaphragmTruthMatchesTheRenderedPlate) {
 
 TEST(SimGirderTest, HundredMetreGirderOfAThousandFramesRenders) {
   // 1,000 stops along a 100 m girder, R = 150 m, 4 % gradient; 20 of its frames rendered.
-  SimConfig c = girder_config(100.0, 4.0, 1000);
+  SimConfig c = testing::girder_walk_config(100.0, 4.0, 1000);
   c.curve_radius_m = 150.0;
   c.gradient_pct = 4.0;
   const auto t0 = std::chrono::steady_clock::now();
