@@ -38,7 +38,7 @@ struct EvaluateOptions {
   long long seed = 1;
   int count = 30;
   std::optional<double> min_length, max_length;
-  std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius;
+  std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius, imu_gravity_deg;
   std::optional<double> transition_fraction, vertical_curve_fraction;
   bool no_pose_refinement = false;
   bool check = false;
@@ -102,6 +102,11 @@ void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
   fraction(o.transition_fraction, "--transition-fraction", r.transition_fraction);
   fraction(o.vertical_curve_fraction, "--vertical-curve-fraction", r.vertical_curve_fraction);
   fraction(o.drifted_fraction, "--drifted-fraction", r.drifted_fraction);
+  if (o.imu_gravity_deg) {
+    if (!(*o.imu_gravity_deg > 0.0 && *o.imu_gravity_deg <= 10.0))
+      throw ParameterError("evaluate: --imu-gravity-deg must be in (0, 10]");
+    r.imu_gravity_deg = *o.imu_gravity_deg;
+  }
   if (o.min_radius && o.max_radius && !(*o.max_radius >= *o.min_radius))
     throw ParameterError("evaluate: --max-radius must not be below --min-radius");
   if (o.min_radius) r.min_radius_m = *o.min_radius;
@@ -266,6 +271,7 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--transition-fraction", o.transition_fraction, "Share of the curved girders that run straight and then into their curve along a transition curve that starts inside the girder, 0-1 (default 0.5)");
   cmd->add_option("--vertical-curve-fraction", o.vertical_curve_fraction, "Share of the curved girders on a vertical curve (a crest or a sag: the gradient changes along the girder), 0-1 (default 0.5)");
   cmd->add_option("--drifted-fraction", o.drifted_fraction, "Share of walks whose poses drift, 0-1 (default 0.5)");
+  cmd->add_option("--imu-gravity-deg", o.imu_gravity_deg, "Every walk carries an IMU's gravity per frame, tilted by this much (degrees, 1 sigma); default none");
   cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");
   cmd->add_option("--max-radius", o.max_radius, "Widest curve radius drawn, metres (default 1000)");
   cmd->add_flag("--no-pose-refinement", o.no_pose_refinement, "Map the girders with the poses as given");

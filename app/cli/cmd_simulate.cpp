@@ -31,6 +31,7 @@ struct SimulateOptions {
   std::optional<std::string> sections, diaphragms, walk, walk_pose;  // lists, parsed in run()
   std::optional<double> sections_start;
   std::optional<std::string> drift;  // MM,DEG per sqrt(m)
+  std::optional<double> imu;         // gravity per frame, deg (1 sigma)
   std::optional<double> girder, diaphragm_spacing, curve_radius, gradient_pct, cross_fall_deg;
   std::optional<std::string> transition;  // START,LENGTH
   std::optional<double> vertical_radius;
@@ -246,6 +247,8 @@ void run(const SimulateOptions& o, CliContext& ctx) {
     c.drift_translation_mm_per_sqrt_m = d[0];
     c.drift_rotation_deg_per_sqrt_m = d[1];
   }
+  check("--imu", o.imu, 0.0, 10.0);
+  if (o.imu) c.imu_gravity_deg = *o.imu;
   apply_layout(o, c);
   c.validate();  // combinations (e.g. manhole opening vs. a small width)
 
@@ -303,6 +306,9 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
   sub->add_option("--walk-pose", opt->walk_pose,
                   "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
+  sub->add_option("--imu", opt->imu,
+                  "An IMU on the camera: each frame's \"gravity\" (where things fall, camera frame), "
+                  "tilted by DEG degrees (1 sigma) about each axis across it; drift does not reach it");
   sub->add_option("--drift", opt->drift,
                   "Odometry drift MM,DEG: random walk of MM millimetres and DEG degrees per "
                   "sqrt(metre) travelled, per axis; \"pose\" drifts, \"pose_true\" is the truth");

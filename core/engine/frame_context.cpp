@@ -22,9 +22,10 @@ FrameContext::FrameContext(const Parameters& params, const Eigen::Vector3d& worl
 }
 
 std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& result,
-                                                     const std::optional<Eigen::Isometry3d>& pose) {
+                                                     const std::optional<Eigen::Isometry3d>& pose,
+                                                     const std::optional<Eigen::Vector3d>& gravity) {
   if (pose) {
-    const Eigen::Isometry3d mapped_with = slam_ ? localise(result, *pose) : *pose;
+    const Eigen::Isometry3d mapped_with = slam_ ? localise(result, *pose, gravity) : *pose;
     stations_.add_frame(index, result, mapped_with);
     return mapped_with;
   }
@@ -35,7 +36,8 @@ std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& res
 
 // The frame's pose group (a new one when the given pose moved or turned past the grouping
 // limits from the group's first), then its pose as the structure so far places it.
-Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isometry3d& pose) {
+Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isometry3d& pose,
+                                         const std::optional<Eigen::Vector3d>& gravity) {
   const Eigen::Isometry3d d = group_first_.inverse() * pose;
   const double turn_deg = Eigen::AngleAxisd(d.linear()).angle() * 180.0 / M_PI;
   if (group_ < 0 || d.translation().norm() > pose_group_m_ || turn_deg > kGroupTurnDeg) {
@@ -44,7 +46,7 @@ Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isome
   }
   FrameWalls walls;
   extract_frame_walls(result, walls);  // a frame with no cross-section may still see a plate
-  return slam_->add_frame(result.map, walls, pose, group_);
+  return slam_->add_frame(result.map, walls, pose, group_, gravity);
 }
 
 }  // namespace tunnelmap

@@ -22,14 +22,17 @@ class FrameContext {
   // Frame `index`'s result (detected without context) gets the context of the frames before it,
   // then becomes part of the context of the frames after it. Returns the pose it was mapped
   // with: the given one, or where localisation put it.
-  std::optional<Eigen::Isometry3d> apply(int index, FrameResult& result, const std::optional<Eigen::Isometry3d>& pose);
+  // `gravity`: where things fall in the camera's frame, when an IMU tells it (localisation).
+  std::optional<Eigen::Isometry3d> apply(int index, FrameResult& result, const std::optional<Eigen::Isometry3d>& pose,
+                                         const std::optional<Eigen::Vector3d>& gravity = std::nullopt);
 
   // For a method that checks the context inside its own fit (the convex-hull baseline).
   TunnelContext& recent() { return recent_; }
   const StationMapBuilder& stations() const { return stations_; }
 
  private:
-  Eigen::Isometry3d localise(FrameResult& result, const Eigen::Isometry3d& pose);
+  Eigen::Isometry3d localise(FrameResult& result, const Eigen::Isometry3d& pose,
+                             const std::optional<Eigen::Vector3d>& gravity);
 
   TunnelOptions tunnel_;
   TunnelContext recent_;

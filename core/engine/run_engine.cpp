@@ -49,7 +49,7 @@ void RunEngine::run_next(int index, DepthFrame& frame, FrameResult& result) {
     return;
   }
   runner_.run(frame, result, nullptr);
-  if (rule_ == ContextRule::Sequence) frame.pose = context_.apply(index, result, frame.pose);
+  if (rule_ == ContextRule::Sequence) frame.pose = context_.apply(index, result, frame.pose, frame.gravity);
 }
 
 SequenceStats RunEngine::run(const FrameSource& source, const Deliver& deliver, const Progress& progress) {
@@ -65,7 +65,7 @@ SequenceStats RunEngine::run(const FrameSource& source, const Deliver& deliver, 
     work = [runner = runner_](const DepthFrame& frame, FrameResult& r) { runner.run(frame, r, nullptr); };
     if (rule_ == ContextRule::Sequence)
       in_order = [this](SequenceFrame& f) {
-        f.frame.pose = context_.apply(static_cast<int>(f.index), f.result, f.frame.pose);
+        f.frame.pose = context_.apply(static_cast<int>(f.index), f.result, f.frame.pose, f.frame.gravity);
       };
   }
   return run_loop(source, std::move(work), std::move(in_order), settings_, deliver, progress, &cancelled_);

@@ -97,6 +97,7 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
     c.noise_model = d.chance(0.7) ? "structured_light" : "tof";
     c.noise_scale = d.uniform(0.7, 1.3);
     g.drifted = d.chance(r.drifted_fraction);
+    c.imu_gravity_deg = r.imu_gravity_deg;
     if (g.drifted) {
       c.drift_translation_mm_per_sqrt_m = r.drift_translation_mm_per_sqrt_m;
       c.drift_rotation_deg_per_sqrt_m = r.drift_rotation_deg_per_sqrt_m;
@@ -126,6 +127,7 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
                   c.manhole_height_m, alignment.c_str(),
                   g.drifted ? "drift" : "exact poses");
     g.summary = buf;
+    if (c.imu_gravity_deg > 0.0) g.summary += ", IMU";
     out.push_back(std::move(g));
   }
   return out;

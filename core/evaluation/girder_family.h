@@ -28,6 +28,9 @@ struct GirderRanges {
   double min_vertical_radius_m = 1500.0, max_vertical_radius_m = 15000.0;
   double drifted_fraction = 0.5;    // walks whose poses drift
   double drift_translation_mm_per_sqrt_m = 10.0, drift_rotation_deg_per_sqrt_m = 0.2;
+  // Above 0: every walk carries an IMU's gravity per frame, this good (SimConfig::imu_gravity_deg).
+  // It draws nothing: the girders are the same with it or without.
+  double imu_gravity_deg = 0.0;
   double min_stop_spacing_m = 0.5, max_stop_spacing_m = 0.8;
   int frames_per_stop = 2;
 };

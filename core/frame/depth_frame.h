@@ -21,6 +21,9 @@ struct DepthFrame {
   Intrinsics intrinsics;
   std::optional<Eigen::Isometry3d> pose;  // camera-to-world, when known
   std::vector<double> joints;             // arm joint vector, when known
+  // The direction things fall, camera frame, unit: an IMU's gravity at the frame (an
+  // accelerometer at rest reads its opposite), when known.
+  std::optional<Eigen::Vector3d> gravity;
   double timestamp_s = 0.0;
   std::string source;                     // file or stream this frame came from (for messages)
 

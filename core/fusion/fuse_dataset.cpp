@@ -6,6 +6,7 @@
 #include "core/engine/run_engine.h"
 #include "core/fusion/fusion_options.h"
 #include "core/fusion/lattice_offset.h"
+#include "core/mapping/dataset_mapping.h"
 #include "core/mapping/posed_sequence.h"
 #include "core/util/error.h"
 
@@ -117,7 +118,7 @@ FusionResult fuse_dataset(const Dataset& ds, const Parameters& params, const Fus
   const auto tm = std::chrono::steady_clock::now();
   std::vector<int> groups = group_poses(poses, fo.pose_group_m);
   if (s.detect) {
-    MappedSequence ms = map_posed_sequence(maps, walls, poses, ds.up, params, s.refine_poses);
+    MappedSequence ms = map_posed_sequence(maps, walls, poses, ds.up, params, s.refine_poses, dataset_gravity(ds));
     r.refinement = std::move(ms.refinement);
     r.stations = std::move(ms.stations);
     poses = ms.poses;

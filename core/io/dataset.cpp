@@ -126,6 +126,15 @@ Eigen::Isometry3d parse_pose(const Checker& c, const json& j, const std::string&
   return pose;
 }
 
+// Three numbers, the direction things fall in the camera frame (any length but zero).
+Eigen::Vector3d parse_gravity(const Checker& c, const json& j, const std::string& key) {
+  const std::vector<double> v = c.numbers(j, key);
+  if (v.size() != 3) c.fail(key, "must have 3 numbers (x, y, z in the camera frame), got " + std::to_string(v.size()));
+  const Eigen::Vector3d g(v[0], v[1], v[2]);
+  if (!(g.norm() > 1e-9) || !std::isfinite(g.norm())) c.fail(key, "must be a non-zero direction");
+  return g.normalized();
+}
+
 DatasetFrameRef parse_frame(const Checker& c, const fs::path& root, const json& j, std::size_t i) {
   const std::string key = "frames[" + std::to_string(i) + "]";
   if (!j.is_object()) c.fail(key, "must be an object");
@@ -137,6 +146,7 @@ DatasetFrameRef parse_frame(const Checker& c, const fs::path& root, const json& 
     f.gt_path = resolve_frame_path(c, root, j["gt_surfaces"], key + ".gt_surfaces");
   if (j.contains("pose")) f.pose = parse_pose(c, j["pose"], key + ".pose");
   if (j.contains("joints")) f.joints = c.numbers(j["joints"], key + ".joints");
+  if (j.contains("gravity")) f.gravity = parse_gravity(c, j["gravity"], key + ".gravity");
   if (j.contains("timestamp")) f.timestamp_s = c.number(j["timestamp"], key + ".timestamp");
   return f;
 }
@@ -255,6 +265,7 @@ DepthFrame Dataset::load_frame(std::size_t i) const {
   f.intrinsics = intrinsics;
   f.pose = ref.pose;
   f.joints = ref.joints;
+  f.gravity = ref.gravity;
   f.timestamp_s = ref.timestamp_s;
   return f;
 }

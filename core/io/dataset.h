@@ -27,6 +27,7 @@ struct DatasetFrameRef {
   std::string depth_path, rgb_path, gt_path;  // resolved, inside the dataset folder; rgb/gt may be empty
   std::optional<Eigen::Isometry3d> pose;      // camera-to-world
   std::vector<double> joints;
+  std::optional<Eigen::Vector3d> gravity;     // camera frame, unit: where things fall
   double timestamp_s = 0.0;
   nlohmann::json raw;                         // the frame's object as written (extra keys kept)
   std::optional<ListOrigin> depth_origin, rgb_origin;  // TUM lists; none for dataset.json

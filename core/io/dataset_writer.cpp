@@ -64,6 +64,7 @@ void write_dataset_folder(const Dataset& ds, const std::string& out_dir, const S
     const std::optional<Eigen::Isometry3d>& pose = ex.poses.empty() ? ref.pose : ex.poses[i];
     if (pose) f["pose"] = pose_json(*pose);
     joints_dropped = joints_dropped || !ref.joints.empty();
+    if (ref.gravity) f["gravity"] = {ref.gravity->x(), ref.gravity->y(), ref.gravity->z()};
     f["timestamp"] = ref.timestamp_s;
     frames.push_back(f);
     if (ex.progress) ex.progress(i, n, (out.target() / f["depth"].get<std::string>()).string());

@@ -23,6 +23,12 @@ std::vector<Eigen::Isometry3d> dataset_poses(const Dataset& ds) {
   return poses;
 }
 
+std::vector<std::optional<Eigen::Vector3d>> dataset_gravity(const Dataset& ds) {
+  std::vector<std::optional<Eigen::Vector3d>> out;
+  for (const DatasetFrameRef& f : ds.frames) out.push_back(f.gravity);
+  return out;
+}
+
 DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_poses,
                            const MappingProgress& progress) {
   const std::size_t n = ds.frames.size();
@@ -59,7 +65,7 @@ DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_po
     return !out.cancelled;
   });
   if (out.cancelled) return out;
-  out.mapped = map_posed_sequence(out.maps, walls, poses, ds.up, pipeline.params(), refine_poses);
+  out.mapped = map_posed_sequence(out.maps, walls, poses, ds.up, pipeline.params(), refine_poses, dataset_gravity(ds));
   out.map_ms = out.mapped.map_ms + extract_ms;
   out.mapped.stations.timings_ms["map"] = out.map_ms;
   return out;

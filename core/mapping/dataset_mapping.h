@@ -27,6 +27,9 @@ struct DatasetMapping {
 // dataset.json when a frame has neither.
 std::vector<Eigen::Isometry3d> dataset_poses(const Dataset& ds);
 
+// Every frame's IMU gravity (camera frame), where the dataset gives one.
+std::vector<std::optional<Eigen::Vector3d>> dataset_gravity(const Dataset& ds);
+
 // `pipeline` carries the parameters and camera up; its world up is set to the dataset's.
 // `progress(k)` is called after frame k-1 (k = 1..n); returning false stops the detection and
 // returns a result marked cancelled. InputError for an empty dataset or a frame without a pose;

@@ -27,7 +27,8 @@ void follow_fitted_centreline(StationMapBuilder& builder, const std::vector<Tunn
 
 MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vector<FrameWalls>& walls,
                                   const std::vector<Eigen::Isometry3d>& poses, const Eigen::Vector3d& world_up,
-                                  const Parameters& params, bool refine) {
+                                  const Parameters& params, bool refine,
+                                  const std::vector<std::optional<Eigen::Vector3d>>& gravity) {
   const auto t0 = std::chrono::steady_clock::now();
   MappedSequence out;
   out.groups = group_poses(poses, fusion_options(params).pose_group_m);
@@ -37,7 +38,8 @@ MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vecto
     SlamOptions slam_opts = slam_options(params);
     slam_opts.world_up = world_up;
     StructureSlam slam(slam_opts);
-    for (std::size_t i = 0; i < maps.size(); ++i) slam.add_frame(maps[i], walls[i], poses[i], out.groups[i]);
+    for (std::size_t i = 0; i < maps.size(); ++i)
+      slam.add_frame(maps[i], walls[i], poses[i], out.groups[i], i < gravity.size() ? gravity[i] : std::nullopt);
     out.refinement = slam.finish();
     if (out.refinement.ran) out.poses = out.refinement.poses;
   }

@@ -84,6 +84,11 @@ inline constexpr ParameterKey<double> correction_sigmas{
     "measurements' noise explains: the cost the correction removes must exceed its chi-square "
     "expectation by this many standard deviations; otherwise the given poses are kept (0: always "
     "correct)"};
+inline constexpr ParameterKey<double> gravity_deg{
+    "slam.gravity_deg", "deg", 0.1, 0.001, 10.0, 0.01, Stage::Map, "IMU gravity",
+    "Standard deviation of a frame's gravity direction (an IMU's accelerometer at rest, the "
+    "dataset frame's \"gravity\"): it holds the camera's tilt to the world's up, which the walls "
+    "leave to the odometry's slow drift over a long girder. Frames without gravity are not held"};
 inline constexpr ParameterKey<int> window_groups{
     "slam.window_groups", "poses", 12, 2, 1000, 1, Stage::Map, "Window",
     "Pose groups re-estimated after each new frame while the sequence runs (the batch "
@@ -111,6 +116,7 @@ struct SlamOptions {
   double patch_floor_m = mm_to_m(slam_keys::patch_floor_mm.default_value);
   double depth_step_m = mm_to_m(slam_keys::depth_step_mm.default_value);
   double correction_sigmas = slam_keys::correction_sigmas.default_value;
+  double gravity_rad = slam_keys::gravity_deg.default_value * M_PI / 180.0;
   int window_groups = slam_keys::window_groups.default_value;
   int window_iterations = slam_keys::window_iterations.default_value;
   bool localise = slam_keys::localise.default_value;

@@ -429,11 +429,16 @@ void StructureSlam::share_systematic_error(int pose, int plane, double sigma_m) 
 }
 
 Eigen::Isometry3d StructureSlam::add_frame(const TunnelMap& map, const FrameWalls& walls,
-                                           const Eigen::Isometry3d& pose, int group) {
+                                           const Eigen::Isometry3d& pose, int group,
+                                           const std::optional<Eigen::Vector3d>& gravity) {
   const auto t0 = std::chrono::steady_clock::now();
   if (groups_.empty() || groups_.back().id != group) start_group(pose, group);
   Group& g = groups_.back();
   const Eigen::Isometry3d offset = g.odometry.inverse() * pose;
+  // The group's pose is its first frame's camera: the frame's gravity turned into it.
+  if (gravity && options_.gravity_rad > 0.0)
+    graph_.gravities.push_back({static_cast<int>(groups_.size()) - 1, offset.linear() * gravity->normalized(),
+                                -options_.world_up.normalized(), options_.gravity_rad});
   g.frames.push_back(frames_++);
   g.offsets.push_back(offset);
   // A frame with no cross-section of its own may still see a plate (core/mapping/frame_walls.h),
@@ -483,6 +488,13 @@ void StructureSlam::solve_window() {
     q.pose -= from;
     q.plane = entry->second;
     window.patches.push_back(q);
+  }
+  const auto first_gravity = std::lower_bound(graph_.gravities.begin(), graph_.gravities.end(), from,
+                                              [](const PoseGravity& g, int pose) { return g.pose < pose; });
+  for (auto it = first_gravity; it != graph_.gravities.end(); ++it) {
+    PoseGravity g = *it;
+    g.pose -= from;
+    window.gravities.push_back(g);
   }
   // The walls' continuity ties stay out of the windows: a window's correction is the
   // measurements' alone. Tie-shaped window states would start the batch's evidence solve

@@ -17,6 +17,7 @@
 // (core/solvers/correction_evidence.h).
 #include <Eigen/Geometry>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -40,8 +41,9 @@ class StructureSlam {
   // Frames in order. `pose`: its odometry / forward-kinematics camera-to-world pose; `group`:
   // its pose group (a group's frames share one correction). Returns the frame's pose as now
   // estimated (after the window's optimisation).
+  // `gravity`: where things fall in the camera's frame (unit), when an IMU tells it.
   Eigen::Isometry3d add_frame(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& pose,
-                              int group);
+                              int group, const std::optional<Eigen::Vector3d>& gravity = std::nullopt);
   // Optimises every pose group and landmark; the corrections and the refined pose per frame.
   PoseRefinement finish();
 

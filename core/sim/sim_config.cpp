@@ -221,6 +221,7 @@ void SimConfig::validate() const {
   check_range("arm_sag_deg_per_m", arm_sag_deg_per_m, 0.0, 10.0);
   check_range("drift_translation_mm_per_sqrt_m", drift_translation_mm_per_sqrt_m, 0.0, 100.0);
   check_range("drift_rotation_deg_per_sqrt_m", drift_rotation_deg_per_sqrt_m, 0.0, 5.0);
+  check_range("imu_gravity_deg", imu_gravity_deg, 0.0, 10.0);
   if (curve_radius_m != 0.0) {
     if (!std::isfinite(curve_radius_m) || std::abs(curve_radius_m) < 50.0 ||
         std::abs(curve_radius_m) > 1e6)

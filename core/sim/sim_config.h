@@ -191,6 +191,11 @@ struct SimConfig {
   bool has_drift() const {
     return drift_translation_mm_per_sqrt_m > 0.0 || drift_rotation_deg_per_sqrt_m > 0.0;
   }
+  // An IMU on the camera: with a value above 0, every frame carries "gravity", where things
+  // fall in the true camera frame, tilted by N(0, imu_gravity_deg^2) about each of its two
+  // axes across it (seeded per frame). An accelerometer at rest is that good; the drift of the
+  // poses does not reach it.
+  double imu_gravity_deg = 0.0;
 
   // Throws ParameterError (one line) for unknown names.
   static SimConfig from_preset(const std::string& name);

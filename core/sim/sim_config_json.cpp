@@ -114,6 +114,7 @@ json sim_config_to_json(const SimConfig& c) {
     j["drift_translation_mm_per_sqrt_m"] = c.drift_translation_mm_per_sqrt_m;
     j["drift_rotation_deg_per_sqrt_m"] = c.drift_rotation_deg_per_sqrt_m;
   }
+  if (c.imu_gravity_deg > 0.0) j["imu_gravity_deg"] = c.imu_gravity_deg;
   return j;
 }
 
@@ -254,6 +255,7 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
     read(j, "arm_sag_deg_per_m", c.arm_sag_deg_per_m);
     read(j, "drift_translation_mm_per_sqrt_m", c.drift_translation_mm_per_sqrt_m);
     read(j, "drift_rotation_deg_per_sqrt_m", c.drift_rotation_deg_per_sqrt_m);
+    read(j, "imu_gravity_deg", c.imu_gravity_deg);
     c.validate();
     return c;
   } catch (const json::exception& e) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -28,6 +29,17 @@ std::string frame_name(int i) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%06d.png", i);
   return buf;
+}
+
+// Where things fall in a camera of orientation `R` (camera-to-world; the world's up is +Z), as
+// an IMU at rest reads it: tilted by N(0, sigma_deg^2) about each of two axes across it,
+// seeded by the dataset's seed and the frame.
+Eigen::Vector3d imu_gravity(const Eigen::Matrix3d& R, double sigma_deg, unsigned seed, std::size_t frame) {
+  const Eigen::Vector3d g = R.transpose() * -Eigen::Vector3d::UnitZ();
+  std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 1000003ULL + frame);
+  std::normal_distribution<double> tilt(0.0, sigma_deg * M_PI / 180.0);
+  const Eigen::Vector3d a = g.unitOrthogonal(), b = g.cross(a);
+  return (Eigen::AngleAxisd(tilt(rng), a) * Eigen::AngleAxisd(tilt(rng), b) * g).normalized();
 }
 
 json pose_json(const Eigen::Isometry3d& T) {
@@ -197,6 +209,10 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
       if (config.has_drift() || girder) fj["pose_true"] = pose_json(*f.frame.pose);
     }
     if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
+    if (config.imu_gravity_deg > 0.0) {
+      const Eigen::Vector3d g = imu_gravity(f.frame.pose->linear(), config.imu_gravity_deg, config.seed, i);
+      fj["gravity"] = {g.x(), g.y(), g.z()};
+    }
     frames.push_back(fj);
     if (progress) progress(i, sim.frame_count(), (out.target() / "depth" / name).string());
   }

@@ -194,6 +194,28 @@ void add_odometry(ceres::Problem& problem, const GraphOdometry& o, std::vector<P
   problem.AddResidualBlock(cost, nullptr, a.q, a.t, b.q, b.t);
 }
 
+// The pose's gravity turned into the world against the world's down: for small tilts, the
+// tilt in radians about the two horizontal axes (its part along `down` is second order).
+struct GravityResidual {
+  Eigen::Vector3d in_pose, down;
+  double inv_sigma_rad;
+
+  template <typename T>
+  bool operator()(const T* q, T* residual) const {
+    const Eigen::Map<const Eigen::Quaternion<T>> Q(q);
+    const Eigen::Matrix<T, 3, 1> g = Q * in_pose.cast<T>();
+    for (int k = 0; k < 3; ++k) residual[k] = T(inv_sigma_rad) * (g[k] - T(down[k]));
+    return true;
+  }
+};
+
+void add_gravity(ceres::Problem& problem, const PoseGravity& g, std::vector<PoseBlock>& poses) {
+  PoseBlock& pose = poses[static_cast<std::size_t>(g.pose)];
+  auto* cost = new ceres::AutoDiffCostFunction<GravityResidual, 3, 4>(
+      new GravityResidual{g.in_pose.normalized(), g.down.normalized(), 1.0 / g.sigma_rad});
+  problem.AddResidualBlock(cost, nullptr, pose.q);
+}
+
 void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigmas, bool pose_held,
                std::vector<PoseBlock>& poses, std::vector<PlaneBlock>& planes) {
   PoseBlock& pose = poses[static_cast<std::size_t>(p.pose)];
@@ -317,6 +339,7 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
       add_patch(problem, p, options.robust_sigmas, held(graph, p.pose), poses, planes);
   for (const PlaneContinuity& c : graph.continuities) add_continuity(problem, c, options.robust_sigmas, poses, planes);
   for (const PlaneBend& b : graph.bends) add_bend(problem, b, options.robust_sigmas, planes);
+  for (const PoseGravity& g : graph.gravities) add_gravity(problem, g, poses);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(poses[i].q)) continue;
     problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);

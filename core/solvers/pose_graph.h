@@ -76,6 +76,16 @@ Eigen::Matrix<T, 3, 1> bend_departure(const std::vector<Eigen::Matrix<T, 3, 1>>&
   return sum - sum.dot(direction) * direction;
 }
 
+// What an IMU at rest tells a pose: the direction things fall, in the pose's frame, is the
+// world's `down` within `sigma_rad`. It fixes the pose's tilt (roll and pitch about the
+// horizontal), not its heading.
+struct PoseGravity {
+  int pose = 0;
+  Eigen::Vector3d in_pose = -Eigen::Vector3d::UnitZ();  // unit, the pose's frame
+  Eigen::Vector3d down = -Eigen::Vector3d::UnitZ();     // unit, the world frame
+  double sigma_rad = 0.002;
+};
+
 struct PoseGraph {
   std::vector<Eigen::Isometry3d> poses;  // initial values
   std::vector<bool> fixed;               // per pose: held at its initial value
@@ -84,6 +94,7 @@ struct PoseGraph {
   std::vector<PlanePatch> patches;
   std::vector<PlaneContinuity> continuities;
   std::vector<PlaneBend> bends;
+  std::vector<PoseGravity> gravities;
 };
 
 struct PoseGraphOptions {

@@ -47,6 +47,15 @@ TEST(GirderFamily, DrawsStayWithinTheRangesAndRepeatWithTheSeed) {
   EXPECT_NEAR(sectioned, 60, 26);
   EXPECT_NEAR(rounded, 100, 30);
   EXPECT_NE(draw_girders(1, 6, r)[0].summary, a[0].summary);
+  // An IMU draws nothing: the same girders, each with its gravity.
+  GirderRanges imu = r;
+  imu.imu_gravity_deg = 0.1;
+  const std::vector<GirderDraw> c = draw_girders(200, 5, imu);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(c[i].config.seed, a[i].config.seed);
+    EXPECT_EQ(c[i].summary, a[i].summary + ", IMU");
+    EXPECT_EQ(c[i].config.imu_gravity_deg, 0.1);
+  }
 }
 
 TEST(GirderFamily, TransitionAndVerticalCurvesChangeOnlyTheCurvedGirdersAndKeepTheGradientInRange) {
@@ -178,6 +187,7 @@ TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesAB
   EXPECT_NEAR(sum_mm / rows, j["girders"][0]["pose_error_mm"]["mean"].get<double>(), 0.01);
   EXPECT_FALSE(std::filesystem::exists(tmp.file("out/.girders-work")));
   EXPECT_EQ(testing::run_cli("evaluate --protocol girders --count 0 --out " + tmp.file("x")).exit_code, 2);
+  EXPECT_EQ(testing::run_cli("evaluate --protocol girders --count 1 --imu-gravity-deg 0 --out " + tmp.file("x")).exit_code, 2);
 }
 
 TEST(GirderProtocol, TheCliDrawsAFamilyOfTightCurvesWithExactPosesWhenAsked) {

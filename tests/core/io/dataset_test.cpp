@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/io/dataset.h"
+#include "core/io/dataset_writer.h"
 #include "core/io/frame_source.h"
 #include "tests/core/io/io_fixtures.h"
 #include "tests/support/expect_input_error.h"
@@ -126,6 +127,28 @@ TEST(Dataset, PoseErrorsNameFrameAndKey) {
   // Within the 1e-3 tolerance is accepted.
   ds.j["frames"][0]["pose"][0] = 1.0004;
   EXPECT_EQ(read_dataset(ds.write()).frames.size(), 2u);
+}
+
+TEST(Dataset, AFramesGravityIsReadAsAUnitDirectionAndABadOneNamesItsKey) {
+  DatasetFixture ds;
+  ds.j["frames"][0]["gravity"] = json::array({0.0, 9.81, 0.0});  // the camera's y points down
+  const Dataset d = read_dataset(ds.write());
+  ASSERT_TRUE(d.frames[0].gravity);
+  EXPECT_TRUE(d.frames[0].gravity->isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_FALSE(d.frames[1].gravity);
+  const DepthFrame f0 = d.load_frame(0);
+  ASSERT_TRUE(f0.gravity);
+  EXPECT_TRUE(f0.gravity->isApprox(Eigen::Vector3d::UnitY()));
+  ds.expect_error([](json& j) { j["frames"][0]["gravity"] = json::array({0.0, 1.0}); }, {"'frames[0].gravity'", "3 numbers", "got 2"});
+  ds.expect_error([](json& j) { j["frames"][1]["gravity"] = json::array({0.0, 0.0, 0.0}); }, {"'frames[1].gravity'", "non-zero"});
+  ds.expect_error([](json& j) { j["frames"][1]["gravity"] = json::array({0.0, "down", 0.0}); }, {"'frames[1].gravity[1]'", "number"});
+  // A copy of the dataset keeps it.
+  IoTempDir out;
+  write_dataset_folder(d, out.file("copy"), SequenceExport{});
+  const Dataset copy = read_dataset(out.file("copy"));
+  ASSERT_TRUE(copy.frames[0].gravity);
+  EXPECT_TRUE(copy.frames[0].gravity->isApprox(Eigen::Vector3d::UnitY()));
+  EXPECT_FALSE(copy.frames[1].gravity);
 }
 
 TEST(Dataset, PathErrorsNameFrameAndKey) {

@@ -138,7 +138,7 @@ TEST(ParameterDeclarations, TableKeepsItsOrderAndAddsTheBaselinesLast) {
       "map.follow_centreline", "map.centreline_window_m", "map.centreline_node_m",
       "slam.odometry_mm_per_sqrt_m", "slam.odometry_deg_per_sqrt_m", "slam.odometry_in_world", "slam.band_m", "slam.wall_continuity_mm", "slam.wall_turn_deg", "slam.compartment_turn_deg",
       "slam.max_wall_depth_m", "slam.max_plate_depth_m", "slam.plate_gate_m", "slam.point_sigma_mm",
-      "slam.patch_floor_mm", "slam.depth_step_mm", "slam.correction_sigmas", "slam.window_groups", "slam.window_iterations", "slam.localise",
+      "slam.patch_floor_mm", "slam.depth_step_mm", "slam.correction_sigmas", "slam.gravity_deg", "slam.window_groups", "slam.window_iterations", "slam.localise",
       "fusion.voxel_mm", "fusion.truncation_mm", "fusion.max_depth_m", "fusion.max_weight", "fusion.min_weight",
       "fusion.bounds_margin_m", "fusion.max_extent_m", "fusion.max_volume_mb", "fusion.pose_group_mm", "fusion.offset_fit_frames",
       "ransac.iterations",

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "core/solvers/pose_graph.h"
@@ -342,6 +343,64 @@ TEST(PoseGraph, FourStretchesOfAWallTurnAsATransitionCurveDoes) {
   // are weak against a tie 20 sigmas off at the start), and near where the truth has it.
   EXPECT_NEAR(deg[1], deg[0] / 3.0 + deg[2] - deg[3] / 3.0, 0.002);
   EXPECT_NEAR(deg[1], 0.5, 0.02);
+}
+
+// Ten poses 1 m apart along x, odometry between them that pitches the camera by 0.5 degrees
+// and turns it by 0.5 degrees a step (each within its uncertainty); no landmarks.
+struct TiltedWalk {
+  PoseGraph graph;
+  std::vector<Eigen::Isometry3d> truth;
+};
+
+TiltedWalk tilted_walk() {
+  TiltedWalk w;
+  Eigen::Isometry3d given = camera_at(0, 0, 1);
+  for (int k = 0; k < 10; ++k) {
+    w.truth.push_back(camera_at(k, 0, 1));
+    w.graph.poses.push_back(given);
+    w.graph.fixed.push_back(k == 0);
+    if (k == 0) continue;
+    const Eigen::Isometry3d measured = Eigen::Translation3d(Eigen::Vector3d(0, 0, 1)) *
+                                       Eigen::AngleAxisd(0.5 * M_PI / 180.0, Eigen::Vector3d::UnitX()) *
+                                       Eigen::AngleAxisd(0.5 * M_PI / 180.0, Eigen::Vector3d::UnitY());
+    GraphOdometry o;
+    o.from = k - 1;
+    o.to = k;
+    o.relative = measured;
+    o.sigma_m = 0.01;
+    o.sigma_rad = 1.0 * M_PI / 180.0;
+    w.graph.odometry.push_back(o);
+  }
+  for (int k = 1; k < 10; ++k) w.graph.poses[static_cast<std::size_t>(k)] = w.graph.poses[static_cast<std::size_t>(k - 1)] * w.graph.odometry[static_cast<std::size_t>(k - 1)].relative;
+  return w;
+}
+
+// The camera's pitch (about its x, the girder's across) and heading (about the world's up)
+// against the truth, degrees.
+std::pair<double, double> pitch_and_heading_deg(const Eigen::Isometry3d& pose, const Eigen::Isometry3d& truth) {
+  const Eigen::AngleAxisd d(pose.linear() * truth.linear().transpose());  // world frame
+  const Eigen::Vector3d w = d.axis() * d.angle() * 180.0 / M_PI;
+  return {w.y(), w.z()};
+}
+
+TEST(PoseGraph, AnImusGravityHoldsTheTiltAndLeavesTheHeadingToTheOdometry) {
+  TiltedWalk w = tilted_walk();
+  const auto [pitch_given, heading_given] = pitch_and_heading_deg(w.graph.poses.back(), w.truth.back());
+  for (int k = 1; k < 10; ++k) {
+    PoseGravity g;
+    g.pose = k;
+    g.in_pose = w.truth[static_cast<std::size_t>(k)].linear().transpose() * -Eigen::Vector3d::UnitZ();
+    g.sigma_rad = 0.1 * M_PI / 180.0;
+    w.graph.gravities.push_back(g);
+  }
+  const PoseGraphSolution s = solve_pose_graph(w.graph);
+  ASSERT_TRUE(s.converged);
+  const auto [pitch, heading] = pitch_and_heading_deg(s.poses.back(), w.truth.back());
+  std::printf("last pose: pitch %.3f deg (given %.3f), heading %.3f deg (given %.3f)\n", pitch, pitch_given, heading,
+              heading_given);
+  EXPECT_GT(std::abs(pitch_given), 4.0);  // nine steps of 0.5 degrees
+  EXPECT_LT(std::abs(pitch), 0.05);
+  EXPECT_NEAR(heading, heading_given, 0.05);  // gravity says nothing of the heading
 }
 
 }  // namespace
