@@ -3,6 +3,7 @@
 //                           120 frames: counters "ms_per_frame" (each frame's window, the robot
 //                           on the move; budget 10 ms), "batch_ms" and "batch_iterations" (the
 //                           final optimisation) and "landmarks".
+//   BM_StructureSlamGirderImu the same walk with an IMU's gravity (0.1 degrees) on every frame.
 //   BM_FuseWithRefinement   the whole fuse_dataset of a 30-frame lab arm sequence with 2 deg/m of
 //                           sag: "fuse_ms" and "refine_share_pct" (budget 20 %).
 //   tunnelmap_bench --benchmark_filter='StructureSlam|Refinement'
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 
 #include "core/fusion/fuse_dataset.h"
 #include "core/fusion/fusion_options.h"
@@ -41,7 +43,7 @@ std::string sag_dataset() {
   return dataset("sag", c);
 }
 
-std::string girder_dataset() {
+std::string girder_dataset(double imu_gravity_deg) {
   SimConfig c = SimConfig::from_preset("field");
   c.seed = 7;
   c.girder_length_m = 40.0;
@@ -57,7 +59,8 @@ std::string girder_dataset() {
   walk.pose = SimCameraPose{0.0, 0.5, 0.0, 0.0, 0.0};
   walk.through_openings = true;
   c.walk = walk;
-  return dataset("girder-walk", c);
+  c.imu_gravity_deg = imu_gravity_deg;
+  return dataset(imu_gravity_deg > 0.0 ? "girder-walk-imu" : "girder-walk", c);
 }
 
 Parameters preset(const char* name) {
@@ -66,14 +69,14 @@ Parameters preset(const char* name) {
   return p;
 }
 
-void BM_StructureSlamGirder(benchmark::State& state) {
-  const Dataset ds = read_dataset(girder_dataset());
+void run_girder_slam(benchmark::State& state, const Dataset& ds) {
   const Parameters params = preset("field");
   Pipeline pipeline(params);
   pipeline.set_world_up(ds.up);
   std::vector<TunnelMap> maps;
   std::vector<FrameWalls> walls;
   std::vector<Eigen::Isometry3d> poses;
+  std::vector<std::optional<Eigen::Vector3d>> gravity;
   FrameResult r;
   for (std::size_t i = 0; i < ds.frames.size(); ++i) {
     DepthFrame f = ds.load_frame(i);
@@ -83,6 +86,7 @@ void BM_StructureSlamGirder(benchmark::State& state) {
     extract_frame_walls(r, walls.back());
     maps.push_back(r.map);
     poses.push_back(*f.pose);
+    gravity.push_back(f.gravity);
   }
   const std::vector<int> groups = group_poses(poses, fusion_options(params).pose_group_m);
   double frames_ms = 0.0, worst_frame_ms = 0.0, batch_ms = 0.0;
@@ -91,7 +95,7 @@ void BM_StructureSlamGirder(benchmark::State& state) {
     StructureSlam slam(slam_options(params));
     const auto t0 = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < maps.size(); ++i) {
-      slam.add_frame(maps[i], walls[i], poses[i], groups[i]);
+      slam.add_frame(maps[i], walls[i], poses[i], groups[i], gravity[i]);
       worst_frame_ms = std::max(worst_frame_ms, slam.last_frame_ms());
     }
     const auto t1 = std::chrono::steady_clock::now();
@@ -109,6 +113,12 @@ void BM_StructureSlamGirder(benchmark::State& state) {
   state.counters["landmarks"] = landmarks;
   state.counters["batch_iterations"] = batch_iterations;
   state.counters["frames"] = static_cast<double>(poses.size());
+}
+
+void BM_StructureSlamGirder(benchmark::State& state) { run_girder_slam(state, read_dataset(girder_dataset(0.0))); }
+
+void BM_StructureSlamGirderImu(benchmark::State& state) {
+  run_girder_slam(state, read_dataset(girder_dataset(0.1)));
 }
 
 void BM_FuseWithRefinement(benchmark::State& state) {
@@ -130,6 +140,7 @@ void BM_FuseWithRefinement(benchmark::State& state) {
 }
 
 BENCHMARK(BM_StructureSlamGirder)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_StructureSlamGirderImu)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_FuseWithRefinement)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 }  // namespace

@@ -103,6 +103,16 @@ QComboBox* RecordingDialog::add_topic_box(const QString& role, TopicRole r, bool
   return box;
 }
 
+// The IMU topic, or none; with several candidates none is read until the user picks one, as on
+// the command line.
+QComboBox* RecordingDialog::add_imu_box() {
+  QComboBox* imu = add_topic_box("imu", TopicRole::Imu, true);
+  if (imu->itemData(0).toString().isEmpty()) imu->removeItem(0);
+  imu->addItem(tr("none: no gravity"), QStringLiteral("none"));
+  if (imu->count() != 2) imu->setCurrentIndex(imu->count() - 1);
+  return imu;
+}
+
 void RecordingDialog::add_choices() {
   auto* form = new QFormLayout;
   form->addRow(tr("Depth topic"), add_topic_box("depth", TopicRole::Depth, false));
@@ -115,6 +125,7 @@ void RecordingDialog::add_choices() {
     pose->setCurrentIndex(0);
   }
   form->addRow(tr("Poses"), pose);
+  form->addRow(tr("IMU (gravity)"), add_imu_box());
   try {  // start where the CLI would: the camera info beside the depth topic
     const TopicChoice auto_choice = choose_topics(rec_, roles_, options());
     QComboBox* info = boxes_["camera_info"];
@@ -157,6 +168,7 @@ RecordingOptions RecordingDialog::options() const {
   o.color_topic = chosen(boxes_.at("color"));
   o.camera_info_topic = chosen(boxes_.at("camera_info"));
   o.pose_topic = chosen(boxes_.at("pose"));
+  o.imu_topic = chosen(boxes_.at("imu"));
   if (world_frame_) o.world_frame = world_frame_->text().trimmed().toStdString();
   if (start_) o.start_s = seconds_of(start_);
   if (duration_) o.duration_s = seconds_of(duration_);

@@ -38,6 +38,7 @@ class RecordingDialog : public QDialog {
   void add_topic_table();
   void add_choices();
   QComboBox* add_topic_box(const QString& role, recordings::TopicRole r, bool optional);
+  QComboBox* add_imu_box();
   void refresh();
 
   QString path_;

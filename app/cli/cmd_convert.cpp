@@ -42,11 +42,12 @@ void run(const ConvertOptions& o, CliContext& ctx) {
   const DatasetInput input(o.in);
   const Dataset& ds = input.dataset();
   SequenceExport ex;
-  std::size_t posed = 0, coloured = 0;
+  std::size_t posed = 0, coloured = 0, with_gravity = 0;
   for (std::size_t i = 0; i < ds.frames.size(); ++i) {
     ex.poses.push_back(resolve_frame_pose(ds, i).pose);  // explicit, else the arm's kinematics
     posed += ex.poses.back().has_value();
     coloured += !ds.frames[i].rgb_path.empty();
+    with_gravity += ds.frames[i].gravity.has_value();
   }
   Progress progress(ds.frames.size());
   ex.progress = [&](std::size_t i, std::size_t, const std::string&) { progress.step(i + 1); };
@@ -55,9 +56,10 @@ void run(const ConvertOptions& o, CliContext& ctx) {
     write_tum_sequence(ds, o.out_dir, ex);
   else
     write_dataset_folder(ds, o.out_dir, ex);
+  const std::string gravity = with_gravity ? ", " + std::to_string(with_gravity) + " with gravity" : "";
   if (!o.quiet)
     std::cout << "wrote " << ds.frames.size() << " frames (" << coloured << " with colour, " << posed
-              << " with a pose) as " << (o.to == "tum" ? "a TUM RGB-D sequence" : "a dataset")
+              << " with a pose" << gravity << ") as " << (o.to == "tum" ? "a TUM RGB-D sequence" : "a dataset")
               << " to " << o.out_dir << "\n";
   ctx.exit_code = 0;
 }

@@ -27,18 +27,20 @@ struct TopicsOptions {
   std::string json_path;
 };
 
-// The suggested command, or why there is none (no depth topic, several candidates).
+// The suggested command, or why there is none (no depth topic, several candidates); and why
+// an IMU is not read by it.
 struct Suggestion {
-  std::string command, reason;
+  std::string command, reason, imu_note;
 };
 
 Suggestion suggest(const std::string& path, const Recording& rec, const std::map<std::string, TopicRole>& roles) {
   try {
-    return {suggested_command(path, choose_topics(rec, roles, RecordingOptions{})), ""};
+    const TopicChoice choice = choose_topics(rec, roles, RecordingOptions{});
+    return {suggested_command(path, choice), "", choice.imu_not_read_because};
   } catch (const InputError& e) {
-    return {"", e.problem()};
+    return {"", e.problem(), ""};
   } catch (const ParameterError& e) {
-    return {"", e.what()};
+    return {"", e.what(), ""};
   }
 }
 
@@ -62,7 +64,8 @@ json topics_json(const std::string& path, const RecordingSummary& s, const std::
           {"topics", topics},
           {"truncated", s.truncation_note ? json(*s.truncation_note) : json(nullptr)},
           {"suggested_command", suggestion.command.empty() ? json(nullptr) : json(suggestion.command)},
-          {"no_suggestion_because", suggestion.reason.empty() ? json(nullptr) : json(suggestion.reason)}};
+          {"no_suggestion_because", suggestion.reason.empty() ? json(nullptr) : json(suggestion.reason)},
+          {"imu_not_read_because", suggestion.imu_note.empty() ? json(nullptr) : json(suggestion.imu_note)}};
 }
 
 void print_table(const std::string& path, const RecordingSummary& s, const std::map<std::string, TopicRole>& roles,
@@ -88,6 +91,7 @@ void print_table(const std::string& path, const RecordingSummary& s, const std::
     std::printf("suggested: %s\n", suggestion.command.c_str());
   else
     std::printf("no suggestion: %s\n", suggestion.reason.c_str());
+  if (!suggestion.imu_note.empty()) std::printf("no gravity: %s\n", suggestion.imu_note.c_str());
 }
 
 void run(const TopicsOptions& o, CliContext& ctx) {

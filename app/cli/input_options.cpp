@@ -42,6 +42,10 @@ void add_recording_options(CLI::App* cmd, recordings::RecordingOptions& r) {
   cmd->add_option("--color-topic", r.color_topic, "Bag: colour image topic, paired by timestamp")->group(group);
   cmd->add_option("--camera-info-topic", r.camera_info_topic, "Bag: CameraInfo topic of the depth camera")->group(group);
   cmd->add_option("--pose-topic", r.pose_topic, "Bag: PoseStamped or Odometry topic (default: the TF tree)")->group(group);
+  cmd->add_option("--imu-topic", r.imu_topic,
+                  "Bag: sensor_msgs/Imu topic whose accelerometer gives each frame's gravity, or none "
+                  "(default: the only one)")
+      ->group(group);
   cmd->add_option("--world-frame", r.world_frame, "Bag: TF frame of the poses (default odom, else map, else the root)")
       ->group(group);
   cmd->add_option("--start", r.start_s, "Bag: skip the first S seconds")->group(group);

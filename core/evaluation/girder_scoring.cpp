@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/evaluation/truth_line.h"
+#include "core/evaluation/truth_pose.h"
 
 namespace tunnelmap {
 
@@ -132,10 +133,9 @@ std::vector<Eigen::Isometry3d> truth_poses(const nlohmann::json& frames, std::si
   if (n < 3) return {};
   std::vector<Eigen::Isometry3d> poses(n, Eigen::Isometry3d::Identity());
   for (std::size_t i = 0; i < n; ++i) {
-    if (!frames[i].contains("pose_true")) return {};
-    const nlohmann::json& p = frames[i]["pose_true"];  // row-major 4 x 4
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) poses[i].matrix()(r, c) = p[4 * r + c].get<double>();
+    const std::optional<Eigen::Isometry3d> T = truth_pose(frames[i]);
+    if (!T) return {};
+    poses[i] = *T;
   }
   return poses;
 }

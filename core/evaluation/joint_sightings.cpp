@@ -6,7 +6,10 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+
+#include "core/evaluation/truth_pose.h"
 
 namespace tunnelmap {
 
@@ -60,22 +63,14 @@ WallLabels wall_labels(const nlohmann::json& truth, std::size_t joints) {
   return out;
 }
 
-Eigen::Isometry3d true_pose(const nlohmann::json& frame) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  const nlohmann::json& p = frame["pose_true"];  // row-major 4 x 4
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) T.matrix()(r, c) = p[4 * r + c].get<double>();
-  return T;
-}
-
 // Sampled pixels per 2 * joint + side (0 the section before the joint, 1 after) and 5 cm bin of truth station.
 using Bins = std::vector<std::map<long, int>>;
 
-void count_frame(const Dataset& ds, std::size_t i, const TruthLine& line, const WallLabels& walls, Bins& bins) {
+void count_frame(const Dataset& ds, std::size_t i, const Eigen::Isometry3d& T, const TruthLine& line,
+                 const WallLabels& walls, Bins& bins) {
   const std::vector<std::uint16_t> labels = ds.load_gt_surfaces(i);
   if (labels.empty()) return;
   const DepthFrame depth = ds.load_frame(i);
-  const Eigen::Isometry3d T = true_pose(ds.frames[i].raw);
   const std::size_t camera = line.nearest(T.translation());
   const Intrinsics& K = ds.intrinsics;
   const int joints = static_cast<int>(walls.steps.size());
@@ -113,11 +108,12 @@ std::vector<JointSighting> joint_sightings(const Dataset& ds, const TruthLine& l
   if (walls.steps.size() != joint_m.size()) return {};
   Bins bins(2 * joint_m.size());
   for (std::size_t i = 0; i < ds.frames.size(); ++i) {
-    if (ds.frames[i].gt_path.empty() || !ds.frames[i].raw.contains("pose_true")) return {};
-    const double camera_m = line.station_of(true_pose(ds.frames[i].raw).translation());
+    const std::optional<Eigen::Isometry3d> camera = truth_pose(ds.frames[i].raw);
+    if (ds.frames[i].gt_path.empty() || !camera) return {};
+    const double camera_m = line.station_of(camera->translation());
     const bool near = std::any_of(joint_m.begin(), joint_m.end(),
                                   [&](double j) { return std::abs(j - camera_m) < kFrameReachM; });
-    if (near) count_frame(ds, i, line, walls, bins);
+    if (near) count_frame(ds, i, *camera, line, walls, bins);
   }
   std::vector<JointSighting> out;
   for (std::size_t k = 0; k < joint_m.size(); ++k) out.push_back(sighting(joint_m[k], bins[2 * k], bins[2 * k + 1]));

@@ -110,6 +110,18 @@ fs::path make_temp_folder() {
   return dir;
 }
 
+// How many frames the IMU gave gravity, or why it was not read.
+void note_gravity(const TopicChoice& topics, const RecordingExport& ex, const std::string& path,
+                  const std::function<void(const std::string&)>& note) {
+  if (!topics.imu_not_read_because.empty()) note(path + ": " + topics.imu_not_read_because);
+  if (topics.imu.empty()) return;
+  std::string text = path + ": gravity from " + topics.imu + " for " + std::to_string(ex.with_gravity) + " of " +
+                     std::to_string(ex.frames) + " frames";
+  if (ex.with_gravity < ex.frames)
+    text += " (the others: no accelerometer sample near them, the robot not still, or no TF from the IMU to the camera)";
+  note(text);
+}
+
 }  // namespace
 
 RecordingExport write_recording_dataset(const RecordingFrames& frames, const std::string& recording_path,
@@ -133,6 +145,10 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
       fj["pose"] = pose_json(*f.pose);
       ++ex.posed;
     }
+    if (f.gravity) {
+      fj["gravity"] = {f.gravity->x(), f.gravity->y(), f.gravity->z()};
+      ++ex.with_gravity;
+    }
     list.push_back(fj);
     if (ex.frames == 0) K = f.intrinsics;
     ++ex.frames;
@@ -150,7 +166,7 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
       {"recording",
        {{"path", recording_path}, {"depth_topic", frames.topics().depth}, {"color_topic", frames.topics().color},
         {"camera_info_topic", frames.topics().camera_info}, {"pose_topic", frames.topics().pose},
-        {"world_frame", frames.world_frame()}}}};
+        {"imu_topic", frames.topics().imu}, {"world_frame", frames.world_frame()}}}};
   std::ofstream out(dir / "dataset.json");
   out << dataset.dump(2) << "\n";
   if (!out) throw InputError((dir / "dataset.json").string(), "cannot write");
@@ -171,6 +187,7 @@ std::unique_ptr<FrameSource> extract_recording(const Recording& rec, const std::
     const RecordingExport ex = write_recording_dataset(frames, path, dir, up, progress);
     if (opt.note && ex.depth_out_of_range)
       opt.note(path + ": " + std::to_string(ex.depth_out_of_range) + " depth pixels beyond 65.535 m read as no measurement");
+    if (opt.note) note_gravity(frames.topics(), ex, path, opt.note);
     Dataset ds = read_dataset(dir.string());
     ds.max_image_pixels = opt.max_image_pixels;
     auto source = std::make_unique<ExtractedRecordingSource>(dir, std::move(ds));

@@ -16,7 +16,7 @@
 namespace tunnelmap::recordings {
 
 struct RecordingExport {
-  std::size_t frames = 0, posed = 0, coloured = 0;
+  std::size_t frames = 0, posed = 0, coloured = 0, with_gravity = 0;
   std::size_t depth_out_of_range = 0;  // pixels past 65.535 m, written as no measurement
 };
 

@@ -99,6 +99,7 @@ void RecordingFrames::read_static_topics(const Recording& rec) {
   if (!choice_.camera_info.empty()) topics.insert(choice_.camera_info);
   if (choice_.use_tf) topics.insert(choice_.tf_topics.begin(), choice_.tf_topics.end());
   if (!choice_.pose.empty()) topics.insert(choice_.pose);
+  if (!choice_.imu.empty()) topics.insert(choice_.imu);
   if (topics.empty()) return;
   std::map<std::string, RosType> types;
   for (const TopicInfo& t : rec.summary().topics) types[t.name] = ros_type(t.type);
@@ -118,6 +119,7 @@ void RecordingFrames::read_static_topics(const Recording& rec) {
         tf_.add(t, false);
         if (world_frame_.empty()) world_frame_ = t.header.frame_id;
       }
+      if (type == RosType::Imu && m.topic == choice_.imu) add_imu_sample(decode_imu(m, enc), m.log_time_ns);
     } catch (const TruncatedData& e) {
       throw InputError(rec.summary().files.front(), "topic " + m.topic + " at " + time_text(m.log_time_ns) + ": " + e.what());
     }
@@ -145,6 +147,24 @@ std::optional<Eigen::Isometry3d> RecordingFrames::pose_at(const std::string& cam
   if (!choice_.pose.empty() && !tf_.has_frame(camera_frame))
     return tf_.lookup(world, pose_child_frame_, stamp_ns, tolerance_ns);
   return std::nullopt;
+}
+
+void RecordingFrames::add_imu_sample(const RosImu& imu, std::int64_t log_time_ns) {
+  if (!imu.linear_acceleration) return;
+  if (imu_frame_.empty()) imu_frame_ = imu.header.frame_id;
+  imu_.add(imu.header.stamp_ns != 0 ? imu.header.stamp_ns : log_time_ns, *imu.linear_acceleration);
+}
+
+// The IMU's gravity turned into the camera's frame at the stamp: on an arm the mounting between
+// them moves, and the TF tree knows how.
+std::optional<Eigen::Vector3d> RecordingFrames::gravity_at(const std::string& camera_frame, std::int64_t stamp_ns,
+                                                           std::int64_t tolerance_ns) const {
+  const std::optional<Eigen::Vector3d> falling = imu_.falling_at(stamp_ns);
+  if (!falling) return std::nullopt;
+  if (imu_frame_ == camera_frame) return falling;
+  const auto camera_from_imu = tf_.lookup(camera_frame, imu_frame_, stamp_ns, tolerance_ns);
+  if (!camera_from_imu) return std::nullopt;
+  return (camera_from_imu->linear() * *falling).normalized();
 }
 
 void RecordingFrames::for_each_frame(const std::function<bool(DepthFrame&)>& visit) const {
@@ -209,6 +229,7 @@ void RecordingFrames::for_each_frame(const std::function<bool(DepthFrame&)>& vis
       if (undistort_) undistort_->apply(f.depth, f.width, f.height);
     }
     f.pose = pose_at(header.frame_id, p.stamp_ns, max_dt_ns);
+    f.gravity = gravity_at(header.frame_id, p.stamp_ns, max_dt_ns);
     return p;
   };
 

@@ -7,7 +7,10 @@
 //    distortion is removed with OpenCV (nearest neighbour for depth, so no invented depth);
 //  - colour paired with the nearest colour image within ReadOptions::max_time_diff_s;
 //  - the pose: world frame <- the depth image's frame at its stamp, through the TF tree (or
-//    the pose topic's transforms composed with the static ones), unknown when not connected.
+//    the pose topic's transforms composed with the static ones), unknown when not connected;
+//  - gravity from the IMU topic's accelerometer near the stamp (ImuGravityTrack), turned into
+//    the depth image's frame through the TF tree; unknown when the robot was not still or the
+//    IMU's frame does not reach the camera's.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -15,6 +18,7 @@
 
 #include "core/frame/depth_frame.h"
 #include "core/io/read_options.h"
+#include "core/recordings/imu_gravity.h"
 #include "core/recordings/recording.h"
 #include "core/recordings/recording_options.h"
 #include "core/recordings/tf_tree.h"
@@ -41,6 +45,9 @@ class RecordingFrames {
   std::string default_world_frame() const;
   std::optional<Eigen::Isometry3d> pose_at(const std::string& camera_frame, std::int64_t stamp_ns,
                                            std::int64_t tolerance_ns) const;
+  std::optional<Eigen::Vector3d> gravity_at(const std::string& camera_frame, std::int64_t stamp_ns,
+                                            std::int64_t tolerance_ns) const;
+  void add_imu_sample(const RosImu& imu, std::int64_t log_time_ns);
 
   const Recording& rec_;
   RecordingOptions opt_;
@@ -50,6 +57,8 @@ class RecordingFrames {
   std::optional<RosCameraInfo> camera_info_;
   std::string pose_child_frame_;  // PoseStamped: the pose is the camera's own
   std::string world_frame_;
+  ImuGravityTrack imu_;
+  std::string imu_frame_;
   std::unique_ptr<Undistortion> undistort_;
   std::int64_t recording_start_ns_ = 0;
 };

@@ -64,6 +64,7 @@ RosType ros_type(const std::string& type_name) {
   if (t == "geometry_msgs/PoseStamped") return RosType::PoseStamped;
   if (t == "geometry_msgs/TransformStamped") return RosType::TransformStamped;
   if (t == "nav_msgs/Odometry") return RosType::Odometry;
+  if (t == "sensor_msgs/Imu") return RosType::Imu;
   return RosType::Other;
 }
 
@@ -76,6 +77,7 @@ const char* ros_type_label(RosType t) {
     case RosType::PoseStamped: return "geometry_msgs/PoseStamped";
     case RosType::TransformStamped: return "geometry_msgs/TransformStamped";
     case RosType::Odometry: return "nav_msgs/Odometry";
+    case RosType::Imu: return "sensor_msgs/Imu";
     case RosType::Other: break;
   }
   return "other";
@@ -148,6 +150,22 @@ RosTransform decode_odometry(const MessageView& m, MessageEncoding e) {
   t.child_frame_id = r.string();
   t.transform = read_rigid(r);  // pose.pose; its covariance and the twist follow
   return t;
+}
+
+RosImu decode_imu(const MessageView& m, MessageEncoding e) {
+  MessageReader r(m.data, m.size, e);
+  RosImu imu;
+  imu.header = read_header(r, e);
+  double skipped[9];
+  r.f64_array(skipped, 4);  // orientation: zeros when the driver has none
+  r.f64_array(skipped, 9);  // its covariance
+  r.f64_array(skipped, 3);  // angular velocity
+  r.f64_array(skipped, 9);  // its covariance
+  const Eigen::Vector3d a = read_vector3(r);
+  double covariance[9];
+  r.f64_array(covariance, 9);
+  if (covariance[0] != -1.0 && a.allFinite()) imu.linear_acceleration = a;
+  return imu;
 }
 
 }  // namespace tunnelmap::recordings

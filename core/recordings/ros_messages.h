@@ -1,11 +1,13 @@
 #pragma once
 // The ROS messages TunnelMap reads from a recording, decoded from CDR (ROS 2) or the ROS 1
 // wire format: sensor_msgs/Image, CompressedImage and CameraInfo, tf2_msgs/TFMessage (and
-// ROS 1 tf/tfMessage), geometry_msgs/PoseStamped and TransformStamped, nav_msgs/Odometry.
+// ROS 1 tf/tfMessage), geometry_msgs/PoseStamped and TransformStamped, nav_msgs/Odometry,
+// sensor_msgs/Imu.
 // Only the fields used are kept. Decoders throw TruncatedData on a malformed message.
 #include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,8 +54,16 @@ struct RosTransform {
   Eigen::Isometry3d transform = Eigen::Isometry3d::Identity();
 };
 
+// sensor_msgs/Imu's accelerometer: the specific force in m/s² (REP 145: gravity included, so
+// at rest it points up). Absent when the driver marks it unknown (covariance[0] = -1, as a
+// gyro-only topic does).
+struct RosImu {
+  RosHeader header;
+  std::optional<Eigen::Vector3d> linear_acceleration;
+};
+
 enum class RosType { Image, CompressedImage, CameraInfo, TfMessage, PoseStamped, TransformStamped,
-                     Odometry, Other };
+                     Odometry, Imu, Other };
 
 // Maps "sensor_msgs/msg/Image", "sensor_msgs/Image" (ROS 1, or ROS 2 without /msg/), and
 // "tf/tfMessage" to the types above.
@@ -68,5 +78,6 @@ RosTransform decode_transform_stamped(const MessageView& m, MessageEncoding e);
 // PoseStamped and Odometry as a transform header.frame_id <- (child_frame_id or "").
 RosTransform decode_pose_stamped(const MessageView& m, MessageEncoding e);
 RosTransform decode_odometry(const MessageView& m, MessageEncoding e);
+RosImu decode_imu(const MessageView& m, MessageEncoding e);
 
 }  // namespace tunnelmap::recordings

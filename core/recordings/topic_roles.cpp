@@ -30,6 +30,7 @@ TopicRole role_by_type(const TopicInfo& t) {
     case RosType::TfMessage: return t.name == "/tf_static" || t.name == "tf_static" ? TopicRole::TfStatic : TopicRole::Tf;
     case RosType::PoseStamped:
     case RosType::Odometry: return TopicRole::Pose;
+    case RosType::Imu: return TopicRole::Imu;
     default: return TopicRole::None;
   }
 }
@@ -68,6 +69,17 @@ std::string choose(const std::string& given, const std::vector<std::string>& can
   return candidates.empty() ? std::string() : candidates.front();
 }
 
+// The given IMU topic (checked), "none", the only candidate, or none of several (with why).
+void choose_imu(const std::string& given, const std::vector<std::string>& candidates,
+                const std::map<std::string, TopicRole>& roles, const std::string& path, TopicChoice& c) {
+  if (given == "none") return;
+  if (given.empty() && candidates.size() > 1) {
+    c.imu_not_read_because = "several IMU topics (" + join(candidates) + "): choose one with --imu-topic";
+    return;
+  }
+  c.imu = choose(given, candidates, roles, "--imu-topic", "IMU", path);
+}
+
 }  // namespace
 
 const char* topic_role_name(TopicRole r) {
@@ -78,6 +90,7 @@ const char* topic_role_name(TopicRole r) {
     case TopicRole::Tf: return "tf";
     case TopicRole::TfStatic: return "tf_static";
     case TopicRole::Pose: return "pose";
+    case TopicRole::Imu: return "imu";
     case TopicRole::None: break;
   }
   return "";
@@ -130,6 +143,7 @@ TopicChoice choose_topics(const Recording& rec, const std::map<std::string, Topi
   if (!opt.pose_topic.empty() || c.tf_topics.empty())
     c.pose = choose(opt.pose_topic, with_role(roles, TopicRole::Pose), roles, "--pose-topic", "pose", path);
   c.use_tf = c.pose.empty() && !c.tf_topics.empty();
+  choose_imu(opt.imu_topic, with_role(roles, TopicRole::Imu), roles, path, c);
   return c;
 }
 
@@ -138,6 +152,7 @@ std::string suggested_command(const std::string& path, const TopicChoice& c) {
   if (!c.color.empty()) s += " --color-topic " + c.color;
   if (!c.camera_info.empty()) s += " --camera-info-topic " + c.camera_info;
   if (!c.pose.empty()) s += " --pose-topic " + c.pose;
+  if (!c.imu.empty()) s += " --imu-topic " + c.imu;
   return s;
 }
 
@@ -148,6 +163,7 @@ std::string suggested_command(const std::string& path, const TopicChoice& choice
   if (opt.start_s) s << " --start " << *opt.start_s;
   if (opt.duration_s) s << " --duration " << *opt.duration_s;
   if (opt.every > 1) s << " --every " << opt.every;
+  if (opt.imu_topic == "none") s << " --imu-topic none";
   return s.str();
 }
 

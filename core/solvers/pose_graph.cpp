@@ -209,11 +209,13 @@ struct GravityResidual {
   }
 };
 
-void add_gravity(ceres::Problem& problem, const PoseGravity& g, std::vector<PoseBlock>& poses) {
+// Robust: an accelerometer read while the robot was pushed sideways is off by degrees, and
+// must not tilt the pose by as much.
+void add_gravity(ceres::Problem& problem, const PoseGravity& g, double robust_sigmas, std::vector<PoseBlock>& poses) {
   PoseBlock& pose = poses[static_cast<std::size_t>(g.pose)];
   auto* cost = new ceres::AutoDiffCostFunction<GravityResidual, 3, 4>(
       new GravityResidual{g.in_pose.normalized(), g.down.normalized(), 1.0 / g.sigma_rad});
-  problem.AddResidualBlock(cost, nullptr, pose.q);
+  problem.AddResidualBlock(cost, new ceres::HuberLoss(robust_sigmas), pose.q);
 }
 
 void add_patch(ceres::Problem& problem, const PlanePatch& p, double robust_sigmas, bool pose_held,
@@ -339,7 +341,7 @@ PoseGraphSolution solve_pose_graph(const PoseGraph& graph, const PoseGraphOption
       add_patch(problem, p, options.robust_sigmas, held(graph, p.pose), poses, planes);
   for (const PlaneContinuity& c : graph.continuities) add_continuity(problem, c, options.robust_sigmas, poses, planes);
   for (const PlaneBend& b : graph.bends) add_bend(problem, b, options.robust_sigmas, planes);
-  for (const PoseGravity& g : graph.gravities) add_gravity(problem, g, poses);
+  for (const PoseGravity& g : graph.gravities) add_gravity(problem, g, options.robust_sigmas, poses);
   for (std::size_t i = 0; i < poses.size(); ++i) {
     if (!problem.HasParameterBlock(poses[i].q)) continue;
     problem.SetManifold(poses[i].q, new ceres::EigenQuaternionManifold);

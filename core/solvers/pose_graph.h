@@ -98,7 +98,7 @@ struct PoseGraph {
 };
 
 struct PoseGraphOptions {
-  double robust_sigmas = 2.0;  // patch residuals beyond this many sigmas weigh less (Huber)
+  double robust_sigmas = 2.0;  // patch, tie and gravity residuals beyond this many sigmas weigh less (Huber)
   int max_iterations = 50;
   int threads = 1;
 };

@@ -61,6 +61,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     attempt([&] { decode_transform_stamped(m, e); });
     attempt([&] { decode_pose_stamped(m, e); });
     attempt([&] { decode_odometry(m, e); });
+    attempt([&] {
+      const RosImu imu = decode_imu(m, e);
+      if (imu.linear_acceleration && !imu.linear_acceleration->allFinite()) std::abort();  // kept only when finite
+    });
   }
   return 0;
 }

@@ -94,4 +94,19 @@ inline std::vector<std::uint8_t> cdr_odometry(std::int64_t stamp_ns, const std::
   return w.bytes();
 }
 
+// sensor_msgs/msg/Imu with only its accelerometer (orientation and gyro marked unknown), or
+// with none (a gyro-only topic: linear_acceleration_covariance[0] = -1).
+inline std::vector<std::uint8_t> cdr_imu(std::int64_t stamp_ns, const std::string& frame,
+                                         const Eigen::Vector3d& specific_force, bool has_accelerometer = true) {
+  CdrWriter w;
+  w.header(stamp_ns, frame);
+  for (int i = 0; i < 4; ++i) w.f64(0.0);                                 // orientation
+  for (int i = 0; i < 9; ++i) w.f64(i == 0 ? -1.0 : 0.0);                 // its covariance
+  for (int i = 0; i < 3; ++i) w.f64(0.0);                                 // angular velocity
+  for (int i = 0; i < 9; ++i) w.f64(i == 0 ? -1.0 : 0.0);                 // its covariance
+  for (int i = 0; i < 3; ++i) w.f64(specific_force[i]);                   // linear acceleration
+  for (int i = 0; i < 9; ++i) w.f64(i == 0 && !has_accelerometer ? -1.0 : 0.0);
+  return w.bytes();
+}
+
 }  // namespace tunnelmap::testing

@@ -14,6 +14,7 @@ inline constexpr const char* kImageMd5 = "060021388200f6f0f447d0fcd9c64743";
 inline constexpr const char* kCompressedImageMd5 = "8f7a12909da2c9d3332d540a0977563f";
 inline constexpr const char* kCameraInfoMd5 = "c9a58c1b0b154e0e6da7578cb991d214";
 inline constexpr const char* kTfMessageMd5 = "94810edda583a504dfda3829e70d7eec";
+inline constexpr const char* kImuMd5 = "6a62c6daae103f4ff57a132d6f95cec2";
 
 class Ros1Writer {
  public:
@@ -93,6 +94,19 @@ inline std::vector<std::uint8_t> tf_message(std::int64_t t, const std::string& p
   const Eigen::Quaterniond q(T.rotation());
   for (double v : {T.translation().x(), T.translation().y(), T.translation().z(), q.x(), q.y(), q.z(), q.w()})
     m.put<double>(v);
+  return m.bytes();
+}
+
+// sensor_msgs/Imu with only its accelerometer (orientation and gyro marked unknown).
+inline std::vector<std::uint8_t> imu(std::int64_t t, const std::string& frame, const Eigen::Vector3d& specific_force) {
+  Ros1Writer m;
+  m.header(t, frame);
+  for (int i = 0; i < 4; ++i) m.put<double>(0.0);                  // orientation
+  for (int i = 0; i < 9; ++i) m.put<double>(i == 0 ? -1.0 : 0.0);  // its covariance
+  for (int i = 0; i < 3; ++i) m.put<double>(0.0);                  // angular velocity
+  for (int i = 0; i < 9; ++i) m.put<double>(i == 0 ? -1.0 : 0.0);  // its covariance
+  for (int i = 0; i < 3; ++i) m.put<double>(specific_force[i]);    // linear acceleration
+  for (int i = 0; i < 9; ++i) m.put<double>(0.0);
   return m.bytes();
 }
 

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <opencv2/imgcodecs.hpp>
 
+#include "tests/support/imu_at_rest.h"
 #include "tests/support/posed_bag.h"
 #include "tests/support/ros1_message_writer.h"
 #include "tests/support_ros1/ros1_bag_writer.h"
@@ -31,6 +32,16 @@ std::vector<std::uint8_t> compressed_depth_png(const DepthFrame& f) {
   return data;
 }
 
+// The base IMU's readings around the frame (before or from its stamp): the camera's gravity
+// turned into the base through the mounting.
+void write_base_imu(Ros1BagWriter& bag, const DepthFrame& f, std::int64_t t, bool before) {
+  if (!f.gravity) return;
+  const Eigen::Vector3d falling_in_base = camera_mount().linear() * *f.gravity;
+  for (const ImuReading& r : imu_at_rest(t, falling_in_base))
+    if ((r.stamp_ns < t) == before)
+      bag.write("/imu/data", "sensor_msgs/Imu", ros1::kImuMd5, r.stamp_ns, ros1::imu(r.stamp_ns, "base_link", r.specific_force));
+}
+
 }  // namespace
 
 void write_posed_ros1_bag(const Dataset& ds, const std::string& path, const Ros1PosedBagOptions& o) {
@@ -43,6 +54,7 @@ void write_posed_ros1_bag(const Dataset& ds, const std::string& path, const Ros1
     const DepthFrame f = ds.load_frame(i);
     const std::int64_t t = bag_stamp_ns(ds, i);
     const auto w = static_cast<std::uint32_t>(f.width), h = static_cast<std::uint32_t>(f.height);
+    if (o.imu) write_base_imu(bag, f, t, true);
     bag.write("/tf", "tf2_msgs/TFMessage", ros1::kTfMessageMd5, t,
               ros1::tf_message(t, "odom", "base_link", *f.pose * mount.inverse()));
     bag.write("/camera/depth/camera_info", "sensor_msgs/CameraInfo", ros1::kCameraInfoMd5, t,
@@ -62,6 +74,7 @@ void write_posed_ros1_bag(const Dataset& ds, const std::string& path, const Ros1
     if (o.colour)
       bag.write("/camera/color/image_raw", "sensor_msgs/Image", ros1::kImageMd5, t,
                 ros1::image(t, "camera_color_optical_frame", w, h, "rgb8", w * 3, f.rgb));
+    if (o.imu) write_base_imu(bag, f, t, false);
   }
 }
 

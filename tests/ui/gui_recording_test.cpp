@@ -94,6 +94,8 @@ class GuiRecordingTest : public QObject {
     dataset_ = dir_.filePath("sim");
     tunnelmap::SimConfig config;
     config.frames = 6;
+    config.frame_interval_s = 0.2;  // a robot scanning at its stops, with an IMU
+    config.imu_gravity_deg = 0.2;
     tunnelmap::write_sim_dataset(dataset_.toStdString(), config);
     ds_ = tunnelmap::read_dataset(dataset_.toStdString());
     bag_ = dir_.filePath("two_cameras.mcap");
@@ -103,7 +105,7 @@ class GuiRecordingTest : public QObject {
       writer.write(topic, type, static_cast<std::uint64_t>(t), cdr);
       // A second depth camera: the automatic choice is then ambiguous and the user picks.
       if (topic == tunnelmap::testing::kBagDepthTopic) writer.write(kRearDepthTopic, type, static_cast<std::uint64_t>(t), cdr);
-    });
+    }, true);
     writer.close();
   }
 
@@ -113,10 +115,16 @@ class GuiRecordingTest : public QObject {
     QString command;
     int rows = 0;
     bool initially_acceptable = false;
+    QString imu_shown, imu_off_command;
     w->recording_opener()->choose_topics = [&](RecordingDialog& d) {
       rows = d.findChild<QTableWidget*>("recordingTopics")->rowCount();
       QComboBox* depth = d.topic_box("depth");
       initially_acceptable = d.acceptable();
+      imu_shown = d.topic_box("imu")->currentText();
+      QComboBox* imu = d.topic_box("imu");
+      imu->setCurrentIndex(imu->findData("none"));
+      imu_off_command = d.command_line();
+      imu->setCurrentIndex(0);
       depth->setCurrentIndex(depth->findData(tunnelmap::testing::kBagDepthTopic));
       d.findChild<QSpinBox*>()->setValue(2);  // every 2nd frame
       command = d.command_line();
@@ -133,8 +141,11 @@ class GuiRecordingTest : public QObject {
     QVERIFY(w->findChild<QProgressBar*>()->isVisible());  // indexing shows progress at once
     QVERIFY(wait_idle(*w->recording_opener()));
     QVERIFY2(w->last_error().isEmpty(), qPrintable(w->last_error()));
-    // depth twice, colour, camera info, odometry
-    QCOMPARE(rows, 5);
+    // depth twice, colour, camera info, odometry, IMU
+    QCOMPARE(rows, 6);
+    QCOMPARE(imu_shown, QString(tunnelmap::testing::kBagImuTopic));  // the only one, chosen
+    QVERIFY2(command.contains(QString("--imu-topic ") + tunnelmap::testing::kBagImuTopic), qPrintable(command));
+    QVERIFY2(imu_off_command.contains("--imu-topic none"), qPrintable(imu_off_command));
     QVERIFY(initially_acceptable);  // the first depth topic is preselected
     QVERIFY2(command.contains(QString("--depth-topic ") + tunnelmap::testing::kBagDepthTopic), qPrintable(command));
     QVERIFY2(command.contains("--every 2"), qPrintable(command));

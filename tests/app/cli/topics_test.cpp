@@ -38,6 +38,15 @@ TEST(TopicsCommand, ListsTypesCountsRatesAndUses) {
   EXPECT_TRUE(saw_tf_static);
 }
 
+TEST(TopicsCommand, MarksARealImuTopic) {
+  SKIP_WITHOUT_RECORDINGS();
+  const testing::CliRun r = run_cli("topics " + testing::recording("ros1_bag/cartographer_b0-2014-07-21-12-42-53-tiny.bag"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("imu                  sensor_msgs/Imu                     1243     197.38  imu"), std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("no gravity:"), std::string::npos) << r.out;  // one IMU topic: it would be read
+}
+
 TEST(TopicsCommand, SuggestsTheDepthCameraCommandLine) {
   testing::IoTempDir tmp;
   const std::string bag = tmp.file("cam.mcap");
