@@ -171,6 +171,8 @@ void run(const MapOptions& o, CliContext& ctx) {
     r.timings_ms = dm.timings[k];
     nlohmann::json fj = detection_frame_json(k, dm.sources[k], r);
     fj["camera_to_world"] = isometry_to_json(mapped.poses[k]);
+    const std::optional<Eigen::Vector3d>& g = ds.frames[k].gravity;  // the IMU's, as the frame carried it
+    fj["gravity"] = g ? nlohmann::json{g->x(), g->y(), g->z()} : nlohmann::json(nullptr);
     frames.push_back(fj);
   }
 

@@ -127,7 +127,14 @@ TEST(ImuRoundTrip, ConvertKeepsTheGravityAndMapUsesItAsFromTheDataset) {
   const nlohmann::json from_bag = testing::detect_json(seq.tmp, bag, "map_bag", "map");
   testing::expect_same_detections(testing::detect_json(seq.tmp, seq.tmp.file("with_gravity"), "map_dataset", "map"),
                                   from_bag);
+  for (std::size_t i = 0; i < 4; ++i) {  // each frame says which gravity held its tilt
+    const nlohmann::json& g = from_bag["frames"][i]["gravity"];
+    ASSERT_EQ(g.is_null(), i == kFrameWithoutImu) << i;
+    if (!g.is_null())
+      EXPECT_LT(angle_rad(Eigen::Vector3d(g[0], g[1], g[2]), *seq.ds.frames[i].gravity), 1e-9) << i;
+  }
   const nlohmann::json without = testing::detect_json(seq.tmp, bag, "map_bag_without", "map --imu-topic none");
+  EXPECT_TRUE(without["frames"][0]["gravity"].is_null());
   double largest_change = 0.0;
   for (std::size_t i = 0; i < 4; ++i) {
     const auto a = from_bag["frames"][i]["camera_to_world"].flatten(), b = without["frames"][i]["camera_to_world"].flatten();
