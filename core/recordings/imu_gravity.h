@@ -2,7 +2,8 @@
 // An IMU topic's accelerometer as gravity at any time. A climbing robot scans standing still,
 // and an accelerometer at rest reads the specific force opposite to gravity (REP 145), so the
 // mean over the samples near a depth frame, turned round, is where things fall at that frame.
-// The samples are kept as 10 ms sums: memory grows with the recording's length, not its rate.
+// The window is short because an arm may turn the camera between frames 33 ms apart. The
+// samples are kept as 5 ms sums: memory grows with the recording's length, not its rate.
 #include <Eigen/Core>
 #include <cstdint>
 #include <optional>
@@ -24,8 +25,6 @@ class ImuGravityTrack {
   // Unit, in the IMU's frame; unknown without a sample within the window or when the mean is
   // not gravity (see above).
   std::optional<Eigen::Vector3d> falling_at(std::int64_t stamp_ns) const;
-
-  bool empty() const { return bins_.empty(); }
 
  private:
   static constexpr std::int64_t kBinNs = 5'000'000;
