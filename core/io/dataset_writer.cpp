@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 
+#include "core/io/dataset_json_writer.h"
 #include "core/io/output_folder.h"
-#include "core/util/atomic_file.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -15,24 +14,10 @@ using nlohmann::json;
 
 namespace {
 
-std::string frame_stem(std::size_t i) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06zu", i);
-  return buf;
-}
-
 std::string lower_extension(const std::string& path, const char* fallback) {
   std::string e = fs::path(path).extension().string();
   std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
   return e.empty() ? fallback : e;
-}
-
-json pose_json(const Eigen::Isometry3d& pose) {
-  json a = json::array();
-  const Eigen::Matrix4d m = pose.matrix();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) a.push_back(r == 3 ? (c == 3 ? 1.0 : 0.0) : m(r, c));
-  return a;
 }
 
 }  // namespace
@@ -47,7 +32,7 @@ void write_dataset_folder(const Dataset& ds, const std::string& out_dir, const S
   for (std::size_t i = 0; i < n; ++i) {
     const DatasetFrameRef& ref = ds.frames[i];
     ds.load_frame(i);  // validates depth and colour
-    const std::string stem = frame_stem(i);
+    const std::string stem = dataset_frame_file(i, "");
     json f = {{"depth", "depth/" + stem + ".png"}};
     copy_file_to(ref.depth_path, out.path() / f["depth"].get<std::string>());
     if (!ref.rgb_path.empty()) {
@@ -62,23 +47,16 @@ void write_dataset_folder(const Dataset& ds, const std::string& out_dir, const S
       copy_file_to(ref.gt_path, out.path() / f["gt_surfaces"].get<std::string>());
     }
     const std::optional<Eigen::Isometry3d>& pose = ex.poses.empty() ? ref.pose : ex.poses[i];
-    if (pose) f["pose"] = pose_json(*pose);
+    if (pose) f["pose"] = dataset_pose_json(*pose);
     joints_dropped = joints_dropped || !ref.joints.empty();
-    if (ref.gravity) f["gravity"] = {ref.gravity->x(), ref.gravity->y(), ref.gravity->z()};
+    if (ref.gravity) f["gravity"] = dataset_vector_json(*ref.gravity);
     f["timestamp"] = ref.timestamp_s;
     frames.push_back(f);
     if (ex.progress) ex.progress(i, n, (out.target() / f["depth"].get<std::string>()).string());
   }
-  const Intrinsics& K = ds.intrinsics;
-  json doc = {{"format", kDatasetFormat},
-              {"intrinsics",
-               {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width}, {"height", K.height}}},
-              {"depth_scale", ds.depth_scale},
-              {"up", {ds.up.x(), ds.up.y(), ds.up.z()}},
-              {"frames", frames}};
+  json doc = dataset_document(ds.intrinsics, ds.depth_scale, ds.up, std::move(frames));
   if (ds.ground_truth.is_object()) doc["ground_truth"] = ds.ground_truth;
-  write_file_atomically((out.path() / "dataset.json").string(),
-                        [&](std::ostream& o) { o << doc.dump(2) << "\n"; });
+  write_dataset_json(out.path(), doc);
   out.commit();
   if (ex.note && joints_dropped)
     ex.note(out.target().string() + ": arm joints are not kept; frames carry their poses instead");

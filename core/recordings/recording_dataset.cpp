@@ -4,12 +4,11 @@
 
 #include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/io/dataset.h"
+#include "core/io/dataset_json_writer.h"
 #include "core/util/error.h"
 #include "core/util/image_file.h"
 #include "core/util/temp_registry.h"
@@ -21,19 +20,6 @@ using nlohmann::json;
 namespace {
 
 constexpr double kDatasetDepthScale = 1000.0;  // millimetres, as depth cameras deliver them
-
-std::string frame_name(std::size_t i) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06zu.png", i);
-  return buf;
-}
-
-json pose_json(const Eigen::Isometry3d& T) {
-  json a = json::array();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) a.push_back(T.matrix()(r, c));
-  return a;
-}
 
 // Depth in millimetres; no measurement (0, NaN, negative) stays 0.
 cv::Mat depth_mm(const DepthFrame& f, std::size_t& out_of_range) {
@@ -132,7 +118,7 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
   json list = json::array();
   Intrinsics K;
   frames.for_each_frame([&](DepthFrame& f) {
-    const std::string name = frame_name(ex.frames);
+    const std::string name = dataset_frame_file(ex.frames, ".png");
     write_png(dir / "depth" / name, depth_mm(f, ex.depth_out_of_range));
     json fj = {{"depth", "depth/" + name}, {"timestamp", f.timestamp_s}, {"source", f.source}};
     if (f.has_rgb()) {
@@ -142,11 +128,11 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
       ++ex.coloured;
     }
     if (f.pose) {
-      fj["pose"] = pose_json(*f.pose);
+      fj["pose"] = dataset_pose_json(*f.pose);
       ++ex.posed;
     }
     if (f.gravity) {
-      fj["gravity"] = {f.gravity->x(), f.gravity->y(), f.gravity->z()};
+      fj["gravity"] = dataset_vector_json(*f.gravity);
       ++ex.with_gravity;
     }
     list.push_back(fj);
@@ -157,19 +143,15 @@ RecordingExport write_recording_dataset(const RecordingFrames& frames, const std
   });
   if (ex.frames == 0)
     throw InputError(recording_path, "no depth frame on " + frames.topics().depth + " in the chosen time window");
-  const json dataset = {
-      {"format", kDatasetFormat},
-      {"intrinsics", {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width}, {"height", K.height}}},
-      {"depth_scale", kDatasetDepthScale},
-      {"up", {up.x(), up.y(), up.z()}},
-      {"frames", list},
-      {"recording",
-       {{"path", recording_path}, {"depth_topic", frames.topics().depth}, {"color_topic", frames.topics().color},
-        {"camera_info_topic", frames.topics().camera_info}, {"pose_topic", frames.topics().pose},
-        {"imu_topic", frames.topics().imu}, {"world_frame", frames.world_frame()}}}};
-  std::ofstream out(dir / "dataset.json");
-  out << dataset.dump(2) << "\n";
-  if (!out) throw InputError((dir / "dataset.json").string(), "cannot write");
+  json dataset = dataset_document(K, kDatasetDepthScale, up, std::move(list));
+  dataset["recording"] = {{"path", recording_path},
+                          {"depth_topic", frames.topics().depth},
+                          {"color_topic", frames.topics().color},
+                          {"camera_info_topic", frames.topics().camera_info},
+                          {"pose_topic", frames.topics().pose},
+                          {"imu_topic", frames.topics().imu},
+                          {"world_frame", frames.world_frame()}};
+  write_dataset_json(dir, dataset);
   return ex;
 }
 

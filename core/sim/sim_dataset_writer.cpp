@@ -2,19 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/io/dataset_json_writer.h"
 #include "core/io/output_folder.h"
 #include "core/kinematics/robot_json.h"
 #include "core/sim/sim_config_json.h"
 #include "core/sim/sim_girder.h"
 #include "core/sim/tunnel_simulator.h"
-#include "core/util/atomic_file.h"
 #include "core/util/error.h"
 #include "core/util/image_file.h"
 
@@ -25,12 +23,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string frame_name(int i) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%06d.png", i);
-  return buf;
-}
-
 // Where things fall in a camera of orientation `R` (camera-to-world; the world's up is +Z), as
 // an IMU at rest reads it: tilted by N(0, sigma_deg^2) about each of two axes across it,
 // seeded by the dataset's seed and the frame.
@@ -39,18 +31,11 @@ Eigen::Vector3d imu_gravity(const Eigen::Matrix3d& R, double sigma_deg, unsigned
   std::mt19937_64 rng(static_cast<std::uint64_t>(seed) * 1000003ULL + frame);
   std::normal_distribution<double> tilt(0.0, sigma_deg * M_PI / 180.0);
   const Eigen::Vector3d a = g.unitOrthogonal(), b = g.cross(a);
-  return (Eigen::AngleAxisd(tilt(rng), a) * Eigen::AngleAxisd(tilt(rng), b) * g).normalized();
+  // Drawn one by one: the order of a call's arguments is the compiler's.
+  const double about_a = tilt(rng);
+  const double about_b = tilt(rng);
+  return (Eigen::AngleAxisd(about_a, a) * Eigen::AngleAxisd(about_b, b) * g).normalized();
 }
-
-json pose_json(const Eigen::Isometry3d& T) {
-  json a = json::array();
-  const Eigen::Matrix4d M = T.matrix();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) a.push_back(M(r, c));
-  return a;
-}
-
-json vec_json(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 
 // The sections the cameras can see: every span met between the smallest camera x and the
 // largest, each widened by the sensor range, clipped to that extent.
@@ -81,7 +66,7 @@ json girder_json(const TunnelSimulator& sim, double lo, double hi) {
   const long last = static_cast<long>(std::floor(hi / kStep + 1e-9));
   for (long i = first; i <= last; ++i) {
     const double s = i * kStep;
-    line.push_back({{"station_m", s}, {"point", vec_json(centre(s))}});
+    line.push_back({{"station_m", s}, {"point", dataset_vector_json(centre(s))}});
   }
   json plates = json::array();
   std::vector<double> cuts{lo};
@@ -90,10 +75,10 @@ json girder_json(const TunnelSimulator& sim, double lo, double hi) {
     plates.push_back({{"station_m", p.station},
                       {"kind", p.manhole_plate ? "manhole_plate" : "diaphragm"},
                       {"surface_id", p.id},
-                      {"point", vec_json(p.centreline_world)},
-                      {"normal", vec_json(p.normal_world)},
+                      {"point", dataset_vector_json(p.centreline_world)},
+                      {"normal", dataset_vector_json(p.normal_world)},
                       {"manhole",
-                       {{"center", vec_json(p.centre_world)},
+                       {{"center", dataset_vector_json(p.centre_world)},
                         {"width_m", c.manhole_width_m},
                         {"height_m", c.manhole_height_m},
                         {"shape", c.manhole_shape},
@@ -183,7 +168,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
         const std::uint8_t* rgb = &f.frame.rgb[k * 3];
         bgr.at<cv::Vec3b>(v, u) = cv::Vec3b(rgb[2], rgb[1], rgb[0]);  // OpenCV writes BGR
       }
-    const std::string name = frame_name(i);
+    const std::string name = dataset_frame_file(static_cast<std::size_t>(i), ".png");
     write_image_file((root / "depth" / name).string(), depth);
     const std::string rgb_name = name.substr(0, name.rfind('.')) + "." + config.rgb_format;
     write_image_file((root / "rgb" / rgb_name).string(), bgr);
@@ -197,21 +182,21 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     if (f.arm) {
       // Joints only: readers get the pose by forward kinematics, sag included as an error.
       fj["joints"] = f.arm->joints;
-      fj["robot_base"] = pose_json(f.reported_base);  // drifted like odometry, if drift is on
-      fj["pose_true"] = pose_json(*f.frame.pose);
+      fj["robot_base"] = dataset_pose_json(f.reported_base);  // drifted like odometry, if drift is on
+      fj["pose_true"] = dataset_pose_json(*f.frame.pose);
       if (!robot_json.is_object()) {
         RobotModel robot = robot_preset(config.arm_preset);
         robot.base = f.arm->base;
         robot_json = robot_to_json(robot);
       }
     } else {
-      fj["pose"] = pose_json(f.reported_pose);  // the frame's pose, or with drift the drifted one
-      if (config.has_drift() || girder) fj["pose_true"] = pose_json(*f.frame.pose);
+      fj["pose"] = dataset_pose_json(f.reported_pose);  // the frame's pose, or with drift the drifted one
+      if (config.has_drift() || girder) fj["pose_true"] = dataset_pose_json(*f.frame.pose);
     }
     if (f.distance_to_manhole_m) fj["distance_to_manhole_m"] = *f.distance_to_manhole_m;
     if (config.imu_gravity_deg > 0.0) {
       const Eigen::Vector3d g = imu_gravity(f.frame.pose->linear(), config.imu_gravity_deg, config.seed, i);
-      fj["gravity"] = {g.x(), g.y(), g.z()};
+      fj["gravity"] = dataset_vector_json(g);
     }
     frames.push_back(fj);
     if (progress) progress(i, sim.frame_count(), (out.target() / "depth" / name).string());
@@ -224,7 +209,7 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
                {"name", s.name},
                {"wall", s.wall},
                {"zone", s.zone},
-               {"normal", vec_json(s.normal_world)},
+               {"normal", dataset_vector_json(s.normal_world)},
                {"offset_m", s.offset_world}};
     if (sectioned && s.section >= 0) sj["section"] = s.section;
     surfaces.push_back(sj);
@@ -247,19 +232,11 @@ void write_sim_dataset(const std::string& out_dir, const SimConfig& config,
     gt["girder"] = girder_json(sim, lo, hi);
   }
 
-  json dataset = {
-      {"format", kSimDatasetFormat},
-      {"intrinsics",
-       {{"fx", K.fx}, {"fy", K.fy}, {"cx", K.cx}, {"cy", K.cy}, {"width", K.width},
-        {"height", K.height}}},
-      {"depth_scale", 1000},
-      {"up", {0, 0, 1}},
-      {"frames", frames},
-      {"ground_truth", gt},
-      {"simulator", sim_config_to_json(config)}};
+  json dataset = dataset_document(K, 1000.0, Eigen::Vector3d::UnitZ(), std::move(frames));
+  dataset["ground_truth"] = gt;
+  dataset["simulator"] = sim_config_to_json(config);
   if (robot_json.is_object()) dataset["robot"] = robot_json;
-  write_file_atomically((root / "dataset.json").string(),
-                        [&](std::ostream& file) { file << dataset.dump(2) << "\n"; });
+  write_dataset_json(root, dataset);
   out.commit();
 }
 

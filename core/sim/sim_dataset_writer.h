@@ -9,8 +9,6 @@
 
 namespace tunnelmap {
 
-constexpr const char* kSimDatasetFormat = "tunnelmap-dataset/1";
-
 // Called after each frame's images are written: (index, frame_count, depth path).
 using SimProgress = std::function<void(int, int, const std::string&)>;
 

@@ -35,7 +35,7 @@ TEST(GirderFamily, DrawsStayWithinTheRangesAndRepeatWithTheSeed) {
     EXPECT_LE(c.diaphragm_spacing_m, r.max_spacing_m);
     EXPECT_LE(std::abs(c.gradient_pct), r.max_gradient_pct);
     EXPECT_LE(std::abs(c.cross_fall_deg), r.max_cross_fall_deg);
-    if (c.curve_radius_m != 0) EXPECT_GE(std::abs(c.curve_radius_m), r.min_radius_m);
+    if (c.curve_radius_m != 0) { EXPECT_GE(std::abs(c.curve_radius_m), r.min_radius_m); }
     EXPECT_LT(c.manhole_width_m, c.width_m);
     EXPECT_NO_THROW(c.validate());
     drifted += a[i].drifted, curved += c.curve_radius_m != 0, sectioned += !a[i].constant_section;
@@ -121,7 +121,9 @@ TEST(GirderProtocol, ASmallFamilyMeetsTheStationPlateAndManholeBounds) {
     EXPECT_EQ(f["plates"]["invented"].get<int>(), 0) << kind;
     // With drift a plate's position along the axis carries the odometry's drift from one plate
     // to the next (nothing measures it): placed within 20 mm only with exact poses.
-    if (std::string(kind) == "exact_poses") EXPECT_EQ(f["plates"]["within_tolerance"], f["plates"]["true"]);
+    if (std::string(kind) == "exact_poses") {
+      EXPECT_EQ(f["plates"]["within_tolerance"], f["plates"]["true"]);
+    }
     // Localisation against the structure: exact poses are left alone (the bound asked is 2 mm
     // and 0.05 degrees at p95); drifted poses come within 26 mm and 0.62 deg of the truth after
     // one alignment (measured).

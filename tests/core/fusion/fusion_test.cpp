@@ -211,7 +211,7 @@ TEST_F(SimSequence, SparseMeshMatchesTheDenseMeshOnTheLabAndSagDatasets) {
                 mf.vertices.size(), 100 * af.fraction_within);
     EXPECT_NEAR(double(mf.vertices.size()), double(md.vertices.size()), 0.05 * double(md.vertices.size()));
     EXPECT_NEAR(af.fraction_within, ad.fraction_within, 0.05);
-    if (path == exact) EXPECT_GE(af.fraction_within, 0.95);
+    if (path == exact) { EXPECT_GE(af.fraction_within, 0.95); }
   }
 }
 

@@ -31,7 +31,9 @@ struct Walk {
       TunnelMap m;  // in the camera frame: the centre line 0.3 m to its right, seen 0.5-2.5 m ahead
       m.detected = true;
       m.axis_dir = Eigen::Vector3d::UnitX();
-      m.axis_point = Eigen::Vector3d(0.0, -0.3 + mm(rng), mm(rng));
+      const double across = mm(rng);  // drawn in order: argument order is the compiler's
+      const double up = mm(rng);
+      m.axis_point = Eigen::Vector3d(0.0, -0.3 + across, up);
       m.extent_min_m = 0.5;
       m.extent_max_m = 2.5;
       maps.push_back(m);

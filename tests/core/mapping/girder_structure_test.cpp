@@ -89,10 +89,12 @@ TEST_F(GirderWalk, CompartmentsLieBetweenThePlatesWithTheGirdersCrossSection) {
   for (std::size_t k = 0; k < c.size(); ++k) {
     EXPECT_EQ(c[k]["closed"][0].get<bool>(), k > 0);
     EXPECT_EQ(c[k]["closed"][1].get<bool>(), k + 1 < c.size());
-    if (k > 0) EXPECT_DOUBLE_EQ(c[k]["from_m"].get<double>(), doc["diaphragms"][k - 1]["station_m"].get<double>());
+    if (k > 0) {
+      EXPECT_DOUBLE_EQ(c[k]["from_m"].get<double>(), doc["diaphragms"][k - 1]["station_m"].get<double>());
+    }
     // A dimension no station measured in it stays unknown: null, never a number from elsewhere.
-    if (!c[k]["width_m"].is_null()) EXPECT_NEAR(c[k]["width_m"].get<double>(), 0.84, 0.008);
-    if (!c[k]["height_m"].is_null()) EXPECT_NEAR(c[k]["height_m"].get<double>(), 1.20, 0.008);
+    if (!c[k]["width_m"].is_null()) { EXPECT_NEAR(c[k]["width_m"].get<double>(), 0.84, 0.008); }
+    if (!c[k]["height_m"].is_null()) { EXPECT_NEAR(c[k]["height_m"].get<double>(), 1.20, 0.008); }
     if (k > 0 && k + 1 < c.size() && !c[k]["width_m"].is_null() && !c[k]["height_m"].is_null())
       ++closed_and_measured;
   }

@@ -33,7 +33,9 @@ Scene random_scene(unsigned seed, int nplanes) {
   s.cloud.points[s.cloud.index(5, 4)] = tunnelmap::testing::no_normal();
   s.cloud.points[s.cloud.index(18, 9)] = tunnelmap::testing::no_normal();
   for (int k = 0; k < nplanes; ++k) {
-    const Eigen::Vector3f n = Eigen::Vector3f(tilt(rng), tilt(rng), -1.0f).normalized();
+    const float tilt_x = tilt(rng);  // drawn in order: argument order is the compiler's
+    const float tilt_y = tilt(rng);
+    const Eigen::Vector3f n = Eigen::Vector3f(tilt_x, tilt_y, -1.0f).normalized();
     s.planes.emplace_back(n.x(), n.y(), n.z(), -n.dot(Eigen::Vector3f(0.1f, 0.06f, 2.0f + jitter(rng))));
   }
   return s;

@@ -25,8 +25,13 @@ std::vector<double> random_cell_moments(std::size_t cells, std::size_t stride, s
   for (std::size_t i = 0; i < cells; ++i) {
     const int kind = static_cast<int>(i % 10);  // 0: empty, 1: one point, 2: a line, else a plane
     const int points = kind == 0 ? 0 : kind == 1 ? 1 : 64;
-    const Eigen::Vector3d ref(uni(rng), uni(rng), 2.75 + 2.25 * uni(rng));
-    const Eigen::Vector3d n = Eigen::Vector3d(uni(rng), uni(rng), -1.0).normalized();
+    // Each draw its own statement: the order of a call's arguments is the compiler's.
+    Eigen::Vector3d ref, n;
+    for (int k = 0; k < 3; ++k) ref[k] = uni(rng);
+    ref.z() = 2.75 + 2.25 * ref.z();
+    for (int k = 0; k < 2; ++k) n[k] = uni(rng);
+    n.z() = -1.0;
+    n.normalize();
     const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
     double m[11] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     for (int k = 0; k < points; ++k) {

@@ -291,7 +291,8 @@ TEST(CellFits, RoughCellsNearbyStayNonPlanarUnderTheNoiseBound) {
   std::normal_distribution<float> noise(0.0f, 0.001f);
   std::uniform_real_distribution<float> rough(-0.015f, 0.015f);
   const OrganizedCloud c = hand_cloud(128, 64, [&](int u, int v, Eigen::Vector3f& p, Eigen::Vector3f&) {
-    const float z = 1.0f + noise(rng) + (u >= 64 ? rough(rng) : 0.0f);
+    const float depth_noise = noise(rng);  // drawn before the roughness: operand order is the compiler's
+    const float z = 1.0f + depth_noise + (u >= 64 ? rough(rng) : 0.0f);
     p = Eigen::Vector3f((u - 64) / 570.0f * z, (v - 32) / 570.0f * z, z);
   });
   CellGrid grid;

@@ -17,6 +17,14 @@ double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
 }
 
+// Three draws in order (the order of a call's arguments is the compiler's).
+template <class Distribution>
+Eigen::Vector3f draw_vector(std::mt19937& rng, Distribution& d) {
+  Eigen::Vector3f v;
+  for (int k = 0; k < 3; ++k) v[k] = d(rng);
+  return v;
+}
+
 PlaneSegments run_pgc(const DepthFrame& frame, const GrowOptions& opt = {}) {
   OrganizedCloud cloud;
   build_cloud(frame, CloudOptions{0.1, 20.0}, cloud);
@@ -42,8 +50,8 @@ TEST(PlaneModel, IncrementalUpdateEqualsBatchMean) {
   Eigen::Vector3d sum_p = Eigen::Vector3d::Zero(), sum_n = Eigen::Vector3d::Zero();
   const int N = 5000;
   for (int i = 0; i < N; ++i) {
-    Eigen::Vector3f p(U(rng), U(rng), U(rng) + 3.0f);
-    Eigen::Vector3f n = Eigen::Vector3f(U(rng), U(rng), U(rng)).normalized();
+    const Eigen::Vector3f p = draw_vector(rng, U) + Eigen::Vector3f(0.0f, 0.0f, 3.0f);
+    const Eigen::Vector3f n = draw_vector(rng, U).normalized();  // p drawn first
     model.add(p, n);
     sum_p += p.cast<double>();
     sum_n += n.cast<double>();
@@ -61,7 +69,10 @@ TEST(PlaneModel, LeastSquaresNormalOfNoisyPlane) {
   const Eigen::Vector3f a = n.unitOrthogonal(), b = n.cross(a);
   PlaneModel model;
   for (int i = 0; i < 20000; ++i) {
-    Eigen::Vector3f p = Eigen::Vector3f(0, 0, 3) + a * U(rng) + b * U(rng) + n * noise(rng);
+    const float along_a = U(rng);  // drawn in order: operand order is the compiler's
+    const float along_b = U(rng);
+    const float off_plane = noise(rng);
+    const Eigen::Vector3f p = Eigen::Vector3f(0, 0, 3) + a * along_a + b * along_b + n * off_plane;
     model.add(p, n);
   }
   double rms = 0;
