@@ -40,6 +40,8 @@ struct EvaluateOptions {
   std::optional<double> min_length, max_length;
   std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius, imu_gravity_deg;
   std::optional<double> transition_fraction, vertical_curve_fraction;
+  std::vector<int> girders;  // --girder: run only these of the family
+  bool keep_datasets = false;
   bool no_pose_refinement = false;
   bool check = false;
   bool quiet = false;
@@ -129,6 +131,11 @@ int run_girders_protocol(const EvaluateOptions& o) {
   g.presets_dir = find_presets_dir();
   g.overrides = o.sets;
   g.refine_poses = !o.no_pose_refinement;
+  for (const int i : o.girders)
+    if (i < 0 || i >= o.count)
+      throw ParameterError("evaluate: --girder " + std::to_string(i) + " is not in the family (0.." +
+                           std::to_string(o.count - 1) + " with --count " + std::to_string(o.count) + ")");
+  g.only = o.girders;
   if (o.min_length) g.ranges.min_length_m = *o.min_length;
   if (o.max_length) g.ranges.max_length_m = *o.max_length;
   g.ranges.max_length_m = std::max(g.ranges.max_length_m, g.ranges.min_length_m);
@@ -141,6 +148,7 @@ int run_girders_protocol(const EvaluateOptions& o) {
   StagedFolder out(o.out_dir);  // refused now if it holds files we did not write
   const std::string staged = out.path().string();
   g.work_dir = staged + "/.girders-work";
+  if (o.keep_datasets) g.keep_dir = staged;
   const std::vector<GirderResult> results = run_girders(g);
   std::error_code ec;
   std::filesystem::remove_all(g.work_dir, ec);
@@ -274,6 +282,8 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--imu-gravity-deg", o.imu_gravity_deg, "Every walk carries an IMU's gravity per frame, tilted by this much (degrees, 1 sigma); default none");
   cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");
   cmd->add_option("--max-radius", o.max_radius, "Widest curve radius drawn, metres (default 1000)");
+  cmd->add_option("--girder", o.girders, "With --protocol girders: run only girder N of the family drawn by --count and --seed (repeatable), e.g. to look again at one that failed");
+  cmd->add_flag("--keep-datasets", o.keep_datasets, "With --protocol girders: keep each girder's simulated dataset as OUT/girder-N, to map or view it again");
   cmd->add_flag("--no-pose-refinement", o.no_pose_refinement, "Map the girders with the poses as given");
   cmd->add_flag("--check", o.check, "Exit with code 1 when an acceptance bound fails");
   cmd->add_flag("--quiet,-q", o.quiet, "Only print the final line");

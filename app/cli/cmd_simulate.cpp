@@ -306,7 +306,7 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
   sub->add_option("--walk-pose", opt->walk_pose,
                   "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
-  sub->add_option("--imu", opt->imu,
+  sub->add_option("--imu,--imu-gravity-deg", opt->imu,
                   "An IMU on the camera: each frame's \"gravity\" (where things fall, camera frame), "
                   "tilted by DEG degrees (1 sigma) about each axis across it; drift does not reach it");
   sub->add_option("--drift", opt->drift,

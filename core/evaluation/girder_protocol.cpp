@@ -46,7 +46,8 @@ nlohmann::json joint_sightings_json(const GirderScore& s) {
 
 GirderResult run_one(const GirderDraw& draw, const GirderProtocolOptions& o) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(o.work_dir) / ("girder-" + std::to_string(draw.index));
+  const bool keep = !o.keep_dir.empty();
+  const fs::path dir = fs::path(keep ? o.keep_dir : o.work_dir) / ("girder-" + std::to_string(draw.index));
   fs::remove_all(dir);
   write_sim_dataset(dir.string(), draw.config);
   const Dataset ds = read_dataset(dir.string());
@@ -63,7 +64,7 @@ GirderResult run_one(const GirderDraw& draw, const GirderProtocolOptions& o) {
   r.frames = static_cast<int>(ds.frames.size());
   r.score = score_girder(dm, ds.ground_truth, ds.raw["frames"]);
   score_joint_sightings(ds, GirderScoringOptions{}, r.score);
-  fs::remove_all(dir);
+  if (!keep) fs::remove_all(dir);
   return r;
 }
 
@@ -164,6 +165,8 @@ std::string cell(const nlohmann::json& d) {
 std::vector<GirderResult> run_girders(const GirderProtocolOptions& o) {
   std::vector<GirderResult> out;
   for (const GirderDraw& d : draw_girders(o.count, o.seed, o.ranges)) {
+    // The whole family is drawn either way, so girder N is the same girder with or without `only`.
+    if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), d.index) == o.only.end()) continue;
     out.push_back(run_one(d, o));
     if (o.progress) {
       const GirderScore& s = out.back().score;
@@ -203,14 +206,16 @@ nlohmann::json girders_json(const std::vector<GirderResult>& results, const Gird
             {"drift", {{"translation_mm_per_sqrt_m", r.drift_translation_mm_per_sqrt_m},
                        {"rotation_deg_per_sqrt_m", r.drift_rotation_deg_per_sqrt_m}}},
             {"stop_spacing_m", {r.min_stop_spacing_m, r.max_stop_spacing_m}}}},
+          {"only", o.only.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.only)},
           {"girders", girders},
           {"distributions", {{"exact_poses", family(results, false)}, {"drifted_poses", family(results, true)}}}};
 }
 
 std::string girders_markdown(const nlohmann::json& report) {
   std::ostringstream s;
-  s << "# Whole-girder evaluation\n\n"
-    << report["count"] << " random girders, seed " << report["seed"]
+  s << "# Whole-girder evaluation\n\n";
+  if (report.value("only", nlohmann::json()).is_array()) s << "Girders " << report["only"].dump() << " of ";
+  s << report["count"] << " random girders, seed " << report["seed"]
     << " (`tunnelmap-cli evaluate --protocol girders --count " << report["count"] << " --seed "
     << report["seed"] << "`). Cells: mean / p95 / worst of the absolute error.\n\n"
     << "| measure | exact poses | drifted poses |\n|---|---|---|\n";

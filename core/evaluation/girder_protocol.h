@@ -21,6 +21,8 @@ struct GirderProtocolOptions {
   std::string presets_dir;             // lab.json and field.json
   std::vector<std::string> overrides;  // KEY=VALUE on top of each girder's preset
   std::string work_dir;                // the datasets are written (and removed) below it
+  std::vector<int> only;               // the family's girders to run, by index (empty: all)
+  std::string keep_dir;                // when set, each girder's dataset stays as keep_dir/girder-N
   bool refine_poses = true;
   std::function<void(const std::string&)> progress;  // one line per girder, may be empty
 };

@@ -141,6 +141,7 @@ Dataset read_tum_sequence(const std::string& path, const ReadOptions& opt) {
       no_rgb.push_back(i);
       d.unmatched.notes.push_back(which + ": no colour image within " + seconds_text(max_dt));
     }
+    if (const auto g = sidecar.gravity.find(depth[i].path); g != sidecar.gravity.end()) f.gravity = g->second;
     f.pose = interpolate_pose(gt, f.timestamp_s, max_dt);
     if (!f.pose && has_gt) {
       no_pose.push_back(i);

@@ -43,6 +43,19 @@ Intrinsics parse_intrinsics(const Keys& k, const json& j) {
   return K;
 }
 
+// Any length but zero, normalised: the rule of dataset.json's per-frame "gravity".
+Eigen::Vector3d parse_direction(const Keys& k, const json& v, const std::string& key) {
+  if (!v.is_array() || v.size() != 3) k.fail(key, "must have 3 numbers");
+  Eigen::Vector3d d;
+  for (int i = 0; i < 3; ++i) {
+    if (!v[i].is_number() || !std::isfinite(v[i].get<double>())) k.fail(key, "must have 3 finite numbers");
+    d[i] = v[i].get<double>();
+  }
+  if (!(d.norm() > 1e-9)) k.fail(key, "must not be the zero vector");
+  if (!std::isfinite(d.norm())) k.fail(key, "is too long (its length overflows a double)");
+  return d.normalized();
+}
+
 }  // namespace
 
 TumSidecar read_tum_sidecar(const std::string& path) {
@@ -54,17 +67,11 @@ TumSidecar read_tum_sidecar(const std::string& path) {
     k.fail("format", std::string("must be \"") + kTumSidecarFormat + "\"");
   TumSidecar s;
   if (j.contains("intrinsics")) s.intrinsics = parse_intrinsics(k, j["intrinsics"]);
-  if (j.contains("up")) {
-    const json& u = j["up"];
-    if (!u.is_array() || u.size() != 3) k.fail("up", "must have 3 numbers");
-    Eigen::Vector3d v;
-    for (int i = 0; i < 3; ++i) {
-      if (!u[i].is_number() || !std::isfinite(u[i].get<double>())) k.fail("up", "must have 3 finite numbers");
-      v[i] = u[i].get<double>();
-    }
-    if (!(v.norm() > 1e-9)) k.fail("up", "must not be the zero vector");
-    if (!std::isfinite(v.norm())) k.fail("up", "is too long (its length overflows a double)");
-    s.up = v.normalized();
+  if (j.contains("up")) s.up = parse_direction(k, j["up"], "up");
+  if (j.contains("gravity")) {
+    const json& g = j["gravity"];
+    if (!g.is_object()) k.fail("gravity", "must be an object: depth image (as depth.txt lists it) -> [x, y, z]");
+    for (const auto& [depth_file, v] : g.items()) s.gravity[depth_file] = parse_direction(k, v, "gravity." + depth_file);
   }
   if (j.contains("ground_truth")) {
     s.ground_truth = j["ground_truth"];
@@ -85,6 +92,11 @@ json tum_sidecar_json(const TumSidecar& s) {
   }
   if (s.up) j["up"] = {s.up->x(), s.up->y(), s.up->z()};
   if (s.ground_truth.is_object()) j["ground_truth"] = s.ground_truth;
+  if (!s.gravity.empty()) {
+    json g = json::object();
+    for (const auto& [depth_file, v] : s.gravity) g[depth_file] = {v.x(), v.y(), v.z()};
+    j["gravity"] = g;
+  }
   return j;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // tunnelmap.json beside a TUM sequence: what the TUM layout cannot say and TunnelMap's exports
-// keep — the depth camera's intrinsics, the world up and the dataset's "ground_truth" (tunnel
-// size, true surfaces of simulated sequences). Optional; see docs/dataset-format.md.
+// keep — the depth camera's intrinsics, the world up, the dataset's "ground_truth" (tunnel
+// size, true surfaces of simulated sequences) and each frame's gravity. Optional; see
+// docs/dataset-format.md.
 #include <Eigen/Core>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -18,6 +20,8 @@ struct TumSidecar {
   std::optional<Intrinsics> intrinsics;
   std::optional<Eigen::Vector3d> up;  // unit
   nlohmann::json ground_truth;        // object, or null when absent
+  // Where things fall in the camera frame (unit), by the depth image as depth.txt lists it.
+  std::map<std::string, Eigen::Vector3d> gravity;
 };
 
 // InputError naming the file and the key on any problem (same rules as dataset.json).

@@ -110,6 +110,7 @@ void write_tum_sequence(const Dataset& ds, const std::string& out_dir, const Seq
   std::string gt_txt = "# ground truth trajectory (written by TunnelMap, camera-to-world)\n"
                        "# timestamp tx ty tz qx qy qz qw\n";
   std::size_t with_rgb = 0, with_pose = 0, clipped = 0;
+  TumSidecar side;
   for (std::size_t i = 0; i < n; ++i) {
     const DatasetFrameRef& ref = ds.frames[i];
     const DepthFrame f = ds.load_frame(i);  // validates depth and colour
@@ -119,6 +120,7 @@ void write_tum_sequence(const Dataset& ds, const std::string& out_dir, const Seq
     else
       clipped += write_depth_5000(f, ds.depth_scale, out.path() / depth_rel);
     depth_txt += times[i] + " " + depth_rel + "\n";
+    if (ref.gravity) side.gravity[depth_rel] = *ref.gravity;
     if (!ref.rgb_path.empty()) {
       if (with_rgb++ == 0) make_folder(out.path() / "rgb");
       const std::string rgb_rel = "rgb/" + times[i] + lower_extension(ref.rgb_path);
@@ -135,7 +137,6 @@ void write_tum_sequence(const Dataset& ds, const std::string& out_dir, const Seq
   write_text(out.path() / "depth.txt", depth_txt);
   if (with_rgb > 0) write_text(out.path() / "rgb.txt", rgb_txt);
   if (with_pose > 0) write_text(out.path() / "groundtruth.txt", gt_txt);
-  TumSidecar side;
   side.intrinsics = ds.intrinsics;
   side.up = ds.up;
   side.ground_truth = ds.ground_truth;

@@ -220,5 +220,34 @@ TEST(GirderProtocol, TheCliDrawsAFamilyOfTightCurvesWithExactPosesWhenAsked) {
   EXPECT_FALSE(std::filesystem::exists(tmp.file("x")));
 }
 
+
+TEST(GirderProtocol, TheCliRunsOneGirderOfAFamilyAndKeepsItsDataset) {
+  IoTempDir tmp;
+  const auto run = testing::run_cli("evaluate --protocol girders --count 3 --seed 5 --min-length 6 --max-length 6 "
+                                    "--girder 1 --keep-datasets -q --out " + tmp.file("out"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+  EXPECT_EQ(j["only"], nlohmann::json::array({1}));
+  ASSERT_EQ(j["girders"].size(), 1u);
+  EXPECT_EQ(j["girders"][0]["index"], 1);
+  // The girder the whole family draws as its second.
+  GirderRanges ranges;
+  ranges.min_length_m = ranges.max_length_m = 6.0;
+  const GirderDraw second = draw_girders(3, 5, ranges).at(1);
+  EXPECT_EQ(j["girders"][0]["summary"], second.summary);
+  EXPECT_EQ(j["girders"][0]["seed"], second.config.seed);
+  // Its dataset, kept: the frames it was scored on, with their truth.
+  const nlohmann::json ds = nlohmann::json::parse(testing::slurp(tmp.file("out/girder-1/dataset.json")));
+  EXPECT_EQ(ds["frames"].size(), j["girders"][0]["frames"].get<std::size_t>());
+  EXPECT_TRUE(ds["ground_truth"].contains("girder"));
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("out/girder-0")));
+  EXPECT_NE(testing::slurp(tmp.file("out/girders.md")).find("Girders [1] of 3 random girders"), std::string::npos);
+
+  const auto outside = testing::run_cli("evaluate --protocol girders --count 3 --girder 3 --out " + tmp.file("x"));
+  EXPECT_EQ(outside.exit_code, 2);
+  EXPECT_NE(outside.err.find("--girder 3 is not in the family (0..2 with --count 3)"), std::string::npos) << outside.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp.file("x")));
+}
+
 }  // namespace
 }  // namespace tunnelmap

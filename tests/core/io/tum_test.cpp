@@ -460,6 +460,43 @@ TEST(TumCli, SimulatedSequenceRoundTripsThroughTheTumLayout) {
   }
 }
 
+// Gravity has no place in the TUM layout: tunnelmap.json keeps it by depth image, and a frame
+// without it stays without.
+TEST(TumCli, EachFramesGravityRoundTripsThroughTheSidecar) {
+  IoTempDir tmp;
+  const std::string ds = tmp.file("sim"), tum = tmp.file("tum"), back = tmp.file("back");
+  ASSERT_EQ(run_cli("simulate " + ds + " --frames 4 --seed 5 --imu 0.5 --quiet").exit_code, 0);
+  nlohmann::json doc = read_json(ds + "/dataset.json");
+  doc["frames"][2].erase("gravity");
+  write_text_file(ds + "/dataset.json", doc.dump(2));
+  auto r = run_cli("convert " + ds + " " + tum + " --to tum -q");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_json(tum + "/tunnelmap.json")["gravity"].size(), 3u);
+  r = run_cli("convert " + tum + " " + back + " --to dataset");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("3 with gravity"), std::string::npos) << r.out;
+  const Dataset from_tum = read_dataset(tum);
+  const auto written = read_json(back + "/dataset.json")["frames"];
+  ASSERT_EQ(from_tum.frames.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    SCOPED_TRACE(i);
+    const nlohmann::json& truth = doc["frames"][i];
+    EXPECT_EQ(from_tum.frames[i].gravity.has_value(), truth.contains("gravity"));
+    EXPECT_EQ(written[i].contains("gravity"), truth.contains("gravity"));
+    if (!truth.contains("gravity")) continue;
+    const Eigen::Vector3d g(truth["gravity"][0].get<double>(), truth["gravity"][1].get<double>(),
+                            truth["gravity"][2].get<double>());
+    EXPECT_LT((*from_tum.frames[i].gravity - g.normalized()).norm(), 1e-15);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(written[i]["gravity"][k].get<double>(), g.normalized()[k], 1e-15);
+  }
+  // A direction that is none is refused, naming the file and the frame's key.
+  nlohmann::json side = read_json(tum + "/tunnelmap.json");
+  const std::string first = side["gravity"].items().begin().key();
+  side["gravity"][first] = {0, 0, 0};
+  write_text_file(tum + "/tunnelmap.json", side.dump());
+  expect_input_error([&] { read_dataset(tum); }, {tum + "/tunnelmap.json", "gravity." + first, "zero vector"});
+}
+
 TEST(TumCli, UnmatchedFramesAreReportedAndPoselessFramesRefusedByFuse) {
   TumFolder s;
   write_three_frames(s);
