@@ -69,6 +69,7 @@ struct GirderStructureOptions {
   int min_rim_points = 40;
   int min_rim_directions = 7;        // of 8 around the centre, each with a few rim points
   double max_fit_mm = 12.0;          // median distance of the rim from the outline
+  double view_shift_sigma_m = 0.02;  // how far a frame's pose error may move its view of a plate (0: none)
   double compartment_margin_m = 0.2; // stations this close to a plate do not measure the box
 };
 

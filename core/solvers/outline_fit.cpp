@@ -10,12 +10,13 @@ namespace tunnelmap {
 
 namespace {
 
-// Parameters: centre (2), half-width, half-height [, corner radius].
+// Parameters: centre (2), half-width, half-height [, corner radius]; and the shift (2) of the
+// view the point belongs to, added to the point.
 struct EllipseResidual {
   Eigen::Vector2d p;
   template <typename T>
-  bool operator()(const T* const x, T* residual) const {
-    const T du = (T(p.x()) - x[0]) / x[2], dv = (T(p.y()) - x[1]) / x[3];
+  bool operator()(const T* const x, const T* const shift, T* residual) const {
+    const T du = (T(p.x()) + shift[0] - x[0]) / x[2], dv = (T(p.y()) + shift[1] - x[1]) / x[3];
     // Normalised radius minus one, scaled to metres by the mean semi-axis: close to the
     // distance from the outline for the near-circular shapes of manholes.
     residual[0] = (ceres::sqrt(du * du + dv * dv + T(1e-12)) - T(1.0)) * T(0.5) * (x[2] + x[3]);
@@ -27,14 +28,27 @@ struct EllipseResidual {
 struct RoundedRectangleResidual {
   Eigen::Vector2d p;
   template <typename T>
-  bool operator()(const T* const x, T* residual) const {
+  bool operator()(const T* const x, const T* const shift, T* residual) const {
     using ceres::fmax;
     using ceres::fmin;
     const T r = fmin(x[4], fmin(x[2], x[3]));
-    const T qx = ceres::abs(T(p.x()) - x[0]) - (x[2] - r);
-    const T qy = ceres::abs(T(p.y()) - x[1]) - (x[3] - r);
+    const T qx = ceres::abs(T(p.x()) + shift[0] - x[0]) - (x[2] - r);
+    const T qy = ceres::abs(T(p.y()) + shift[1] - x[1]) - (x[3] - r);
     const T ox = fmax(qx, T(0.0)), oy = fmax(qy, T(0.0));
     residual[0] = ceres::sqrt(ox * ox + oy * oy + T(1e-12)) + fmin(fmax(qx, qy), T(0.0)) - r;
+    return true;
+  }
+};
+
+// A view's shift costs what `kRimNoiseM` of rim distance costs at `sigma` of shift.
+constexpr double kRimNoiseM = 0.003;
+constexpr std::size_t kMinShiftedViewPoints = 20;
+struct ShiftPrior {
+  double weight;
+  template <typename T>
+  bool operator()(const T* const shift, T* residual) const {
+    residual[0] = shift[0] * T(weight);
+    residual[1] = shift[1] * T(weight);
     return true;
   }
 };
@@ -45,12 +59,29 @@ double percentile(std::vector<double> v, double q) {
   return v[i];
 }
 
+// Fits the shape `x` to every view's rim, each view free to shift by about `shift_sigma_m`
+// from the view with the most points, which holds still (0: views held where they are). Returns
+// the median distance of the shifted points from it.
 template <typename Residual, int kParams>
-double solve(const std::vector<Eigen::Vector2d>& rim, std::array<double, kParams>& x) {
+double solve(const std::vector<std::vector<Eigen::Vector2d>>& views, double shift_sigma_m,
+             std::array<double, kParams>& x, std::vector<Eigen::Vector2d>& shifts) {
   ceres::Problem problem;
-  for (const Eigen::Vector2d& p : rim)
-    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, kParams>(new Residual{p}),
-                             new ceres::HuberLoss(0.005), x.data());
+  shifts.assign(views.size(), Eigen::Vector2d::Zero());
+  const auto largest = std::max_element(views.begin(), views.end(),
+                                        [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    for (const Eigen::Vector2d& p : views[v])
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<Residual, 1, kParams, 2>(new Residual{p}),
+                               new ceres::HuberLoss(0.005), x.data(), shifts[v].data());
+    if (views[v].empty()) continue;
+    // A few stray points would move their view anywhere: only a view of some rim may shift.
+    if (shift_sigma_m > 0.0 && views[v].size() >= kMinShiftedViewPoints && views.begin() + v != largest)
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<ShiftPrior, 2, 2>(
+                                   new ShiftPrior{kRimNoiseM / shift_sigma_m}),
+                               nullptr, shifts[v].data());
+    else
+      problem.SetParameterBlockConstant(shifts[v].data());
+  }
   for (int k = 2; k < kParams; ++k) {
     problem.SetParameterLowerBound(x.data(), k, k == 4 ? 0.0 : 0.02);
     problem.SetParameterUpperBound(x.data(), k, 3.0);
@@ -61,13 +92,12 @@ double solve(const std::vector<Eigen::Vector2d>& rim, std::array<double, kParams
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   std::vector<double> r;
-  r.reserve(rim.size());
-  for (const Eigen::Vector2d& p : rim) {
-    double res = 0;
-    const double* params = x.data();
-    Residual{p}(&params[0], &res);
-    r.push_back(std::abs(res));
-  }
+  for (std::size_t v = 0; v < views.size(); ++v)
+    for (const Eigen::Vector2d& p : views[v]) {
+      double res = 0;
+      Residual{p}(x.data(), shifts[v].data(), &res);
+      r.push_back(std::abs(res));
+    }
   return percentile(r, 0.5);
 }
 
@@ -85,31 +115,47 @@ int rim_directions(const std::vector<Eigen::Vector2d>& rim, const Eigen::Vector2
 }
 
 std::optional<OutlineFit> fit_manhole_outline(const std::vector<Eigen::Vector2d>& rim) {
-  if (rim.size() < 12) return std::nullopt;
+  return fit_manhole_outline(std::vector<std::vector<Eigen::Vector2d>>{rim}, 0.0);
+}
+
+std::optional<OutlineFit> fit_manhole_outline(const std::vector<std::vector<Eigen::Vector2d>>& views,
+                                              double shift_sigma_m) {
   std::vector<double> u, v;
-  for (const Eigen::Vector2d& p : rim) u.push_back(p.x()), v.push_back(p.y());
+  for (const auto& view : views)
+    for (const Eigen::Vector2d& p : view) u.push_back(p.x()), v.push_back(p.y());
+  if (u.size() < 12) return std::nullopt;
   const double u0 = percentile(u, 0.05), u1 = percentile(u, 0.95);
   const double v0 = percentile(v, 0.05), v1 = percentile(v, 0.95);
   const double a = std::max(0.03, 0.5 * (u1 - u0)), b = std::max(0.03, 0.5 * (v1 - v0));
   std::array<double, 4> ellipse{0.5 * (u0 + u1), 0.5 * (v0 + v1), a, b};
   std::array<double, 5> rect{ellipse[0], ellipse[1], a, b, 0.3 * std::min(a, b)};
   OutlineFit f;
-  f.ellipse_residual_m = solve<EllipseResidual, 4>(rim, ellipse);
-  f.rectangle_residual_m = solve<RoundedRectangleResidual, 5>(rim, rect);
+  std::vector<Eigen::Vector2d> ellipse_shifts, rect_shifts;
+  f.ellipse_residual_m = solve<EllipseResidual, 4>(views, shift_sigma_m, ellipse, ellipse_shifts);
+  f.rectangle_residual_m = solve<RoundedRectangleResidual, 5>(views, shift_sigma_m, rect, rect_shifts);
+  // The outline sits where the largest view put it; the views put it, on average, there less
+  // their mean shift.
+  const auto mean_shift = [](const std::vector<Eigen::Vector2d>& shifts) {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& s : shifts) sum += s;
+    return Eigen::Vector2d(sum / static_cast<double>(shifts.size()));
+  };
   // The rounded rectangle has one parameter more: it must fit clearly better to be the shape.
   if (f.rectangle_residual_m < 0.7 * f.ellipse_residual_m) {
     f.shape = "rounded_rectangle";
-    f.center = {rect[0], rect[1]};
+    f.center = Eigen::Vector2d(rect[0], rect[1]) - mean_shift(rect_shifts);
     f.half_width_m = rect[2];
     f.half_height_m = rect[3];
     f.corner_radius_m = std::min(rect[4], std::min(rect[2], rect[3]));
     f.median_residual_m = f.rectangle_residual_m;
+    f.view_shifts = rect_shifts;
   } else {
     f.shape = "ellipse";
-    f.center = {ellipse[0], ellipse[1]};
+    f.center = Eigen::Vector2d(ellipse[0], ellipse[1]) - mean_shift(ellipse_shifts);
     f.half_width_m = ellipse[2];
     f.half_height_m = ellipse[3];
     f.median_residual_m = f.ellipse_residual_m;
+    f.view_shifts = ellipse_shifts;
   }
   return f;
 }

@@ -16,10 +16,18 @@ struct OutlineFit {
   double corner_radius_m = 0.0;      // rounded rectangle only
   double median_residual_m = 0.0;    // median distance of the rim points from the outline
   double ellipse_residual_m = 0.0, rectangle_residual_m = 0.0;  // both fits, for the record
+  std::vector<Eigen::Vector2d> view_shifts;  // per view: added to its points to meet the outline
 };
 
 // `rim`: (lateral, vertical) points on the opening's edge. nullopt when too few to fit.
 std::optional<OutlineFit> fit_manhole_outline(const std::vector<Eigen::Vector2d>& rim);
+
+// The rims of several views of one opening, each view of 20 points or more free to shift by
+// about `shift_sigma_m` in the plate's plane from the view with the most points (a pose's error
+// moves the whole view): the outline they agree on. Its centre is where the views put it on
+// average, each view alike. `shift_sigma_m` 0 pools them as they are.
+std::optional<OutlineFit> fit_manhole_outline(const std::vector<std::vector<Eigen::Vector2d>>& views,
+                                              double shift_sigma_m);
 
 // Of 8 directions around `center`, how many hold at least `min_points` rim points: an opening
 // seen only in part cannot be measured.

@@ -223,5 +223,44 @@ TEST(GirderPlates, AFaceInsideTheSectionMustStillBeAsLargeAsAPlate) {
   EXPECT_TRUE(build_girder_structure(map, views).diaphragms.empty());
 }
 
+// One frame's view of a diaphragm at `station` with a 0.50 x 0.70 m elliptic manhole, all of it
+// moved by (dy, dz) in the plate's plane: its pose's error, the same for every point it saw.
+// `upper_only`: the frame saw only the rim's upper half (from near the plate, looking up).
+PlateView shifted_manhole_view(int frame, double station, double dy, double dz, bool upper_only = false) {
+  const auto in_manhole = [](double y, double z) { return std::pow(y / 0.25, 2) + std::pow(z / 0.35, 2) < 1.0; };
+  PlateView v = face_view(frame, station, [&](double y, double z) { return !in_manhole(y, z); });
+  for (Eigen::Vector3d& p : v.samples) p += Eigen::Vector3d(0.0, dy, dz);
+  for (int k = 0; k < 160; ++k) {
+    const double a = 2 * M_PI * k / 160;
+    if (upper_only && std::sin(a) < 0.2) continue;
+    v.rim.push_back({station, 0.25 * std::cos(a) + dy, 0.35 * std::sin(a) + dz});
+  }
+  return v;
+}
+
+TEST(GirderPlates, AManholesSizeDoesNotGrowWithThePosesDisagreement) {
+  // Three frames saw the whole rim, each moved by its pose's error (up to 6 mm). Two more, near
+  // the plate, saw only the rim's top, 20 and 25 mm too high (a pitch 0.3-0.4 degrees off, seen
+  // from 3.5 m). Each view moved onto the outline they agree on, it is the opening; pooled, the
+  // top of the rim rises with the two near views.
+  const StationMap map = two_section_map();
+  std::vector<PlateView> views{shifted_manhole_view(0, 3.0, 0.0, 0.0), shifted_manhole_view(1, 3.0, 0.004, -0.006),
+                               shifted_manhole_view(2, 3.0, -0.003, 0.005),
+                               shifted_manhole_view(3, 3.0, 0.0, 0.020, true),
+                               shifted_manhole_view(4, 3.0, 0.0, 0.025, true)};
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 1u);
+  ASSERT_TRUE(g.diaphragms[0].manhole);
+  EXPECT_NEAR(g.diaphragms[0].manhole->width_m, 0.50, 0.001);
+  EXPECT_NEAR(g.diaphragms[0].manhole->height_m, 0.70, 0.001);
+
+  // Pooled as they are, the rim's top is too high.
+  GirderStructureOptions pooled;
+  pooled.view_shift_sigma_m = 0.0;
+  const GirderStructure p = build_girder_structure(map, views, pooled);
+  ASSERT_TRUE(p.diaphragms.at(0).manhole);
+  EXPECT_GT(p.diaphragms[0].manhole->height_m, 0.70 + 0.004);
+}
+
 }  // namespace
 }  // namespace tunnelmap

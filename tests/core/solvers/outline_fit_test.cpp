@@ -87,5 +87,44 @@ TEST(OutlineFit, ARimSeenOnlyInPartCoversFewDirections) {
   EXPECT_FALSE(fit_manhole_outline(std::vector<Eigen::Vector2d>(5, Eigen::Vector2d::Zero())));
 }
 
+
+// Views of one rounded rectangle, each moved by its own pose error (two saw only the top of
+// the rim); a view of four stray points rides along. Fitted view by view the outline is the
+// opening's, each view's shift undoes its move against the largest view's, and the stray view
+// stays where it is.
+TEST(OutlineFit, ViewsMovedByTheirPosesAgreeOnTheOpening) {
+  const Eigen::Vector2d c(0.01, 0.6);
+  constexpr int kViews = 5;
+  const Eigen::Vector2d moves[kViews] = {{0.0, 0.0}, {0.006, -0.008}, {-0.004, 0.005}, {0.0, 0.022}, {0.003, 0.026}};
+  std::vector<std::vector<Eigen::Vector2d>> views;
+  for (int v = 0; v < kViews; ++v) {
+    std::vector<Eigen::Vector2d> rim;
+    for (const Eigen::Vector2d& p : rounded_rectangle_rim(c, 0.25, 0.31, 0.09, 0.002, 10 + v))
+      if (v < 3 || p.y() > c.y() + 0.1) rim.push_back(p + moves[v]);  // views 3 and 4: the top
+    views.push_back(rim);
+  }
+  views.push_back(std::vector<Eigen::Vector2d>(4, c + Eigen::Vector2d(0.3, 0.4)));
+  const auto joint = fit_manhole_outline(views, 0.02);
+  ASSERT_TRUE(joint);
+  EXPECT_EQ(joint->shape, "rounded_rectangle");
+  EXPECT_NEAR(2 * joint->half_width_m, 0.50, 0.002);
+  EXPECT_NEAR(2 * joint->half_height_m, 0.62, 0.002);
+  ASSERT_EQ(joint->view_shifts.size(), kViews + 1u);
+  Eigen::Vector2d mean_move = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& m : moves) mean_move += m / kViews;
+  std::size_t largest = 0;
+  for (std::size_t v = 1; v < kViews; ++v)
+    if (views[v].size() > views[largest].size()) largest = v;
+  for (int v = 0; v < kViews; ++v)
+    EXPECT_LT((joint->view_shifts[v] + moves[v] - moves[largest]).norm(), 0.003) << v;
+  EXPECT_EQ(joint->view_shifts[kViews], Eigen::Vector2d::Zero());
+  EXPECT_LT((joint->center - (c + mean_move)).norm(), 0.003);
+
+  // Pooled as they are, the top views lift the outline's top.
+  const auto pooled = fit_manhole_outline(views, 0.0);
+  ASSERT_TRUE(pooled);
+  EXPECT_GT(2 * pooled->half_height_m, 0.62 + 0.004);
+}
+
 }  // namespace
 }  // namespace tunnelmap
