@@ -20,6 +20,15 @@ namespace {
 
 using testing::IoTempDir;
 
+// `evaluate --protocol girders ARGS -q --out TMP/out`: its girders.json, or null (and a
+// failure) when it did not run.
+nlohmann::json run_girders_cli(const IoTempDir& tmp, const std::string& args) {
+  const auto run = testing::run_cli("evaluate --protocol girders " + args + " -q --out " + tmp.file("out"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  if (run.exit_code != 0) return nullptr;
+  return nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+}
+
 TEST(GirderFamily, DrawsStayWithinTheRangesAndRepeatWithTheSeed) {
   GirderRanges r;
   const std::vector<GirderDraw> a = draw_girders(200, 5, r), b = draw_girders(200, 5, r);
@@ -153,10 +162,8 @@ TEST(GirderProtocol, ASmallFamilyMeetsTheStationPlateAndManholeBounds) {
 
 TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesABadCount) {
   IoTempDir tmp;
-  const auto run = testing::run_cli("evaluate --protocol girders --count 1 --seed 5 --min-length 6 "
-                                    "--max-length 6 -q --out " + tmp.file("out"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+  const nlohmann::json j = run_girders_cli(tmp, "--count 1 --seed 5 --min-length 6 --max-length 6");
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["protocol"], "girders");
   ASSERT_EQ(j["girders"].size(), 1u);
   ASSERT_TRUE(j["girders"][0]["drifted"].get<bool>());  // seed 5 draws a walk whose poses drift
@@ -194,11 +201,9 @@ TEST(GirderProtocol, TheCliWritesJsonMarkdownAndEveryFramesPoseErrorAndRefusesAB
 
 TEST(GirderProtocol, TheCliDrawsAFamilyOfTightCurvesWithExactPosesWhenAsked) {
   IoTempDir tmp;
-  const auto run = testing::run_cli("evaluate --protocol girders --count 2 --seed 5 --min-length 6 --max-length 6 "
-                                    "--curved-fraction 1 --drifted-fraction 0 --min-radius 150 --max-radius 150 -q "
-                                    "--out " + tmp.file("out"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+  const nlohmann::json j = run_girders_cli(tmp, "--count 2 --seed 5 --min-length 6 --max-length 6 --curved-fraction 1 "
+                                                "--drifted-fraction 0 --min-radius 150 --max-radius 150");
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["ranges"]["curved_fraction"].get<double>(), 1.0);
   EXPECT_EQ(j["ranges"]["drifted_fraction"].get<double>(), 0.0);
   EXPECT_EQ(j["ranges"]["radius_m"], nlohmann::json::array({150.0, 150.0}));
@@ -220,13 +225,11 @@ TEST(GirderProtocol, TheCliDrawsAFamilyOfTightCurvesWithExactPosesWhenAsked) {
   EXPECT_FALSE(std::filesystem::exists(tmp.file("x")));
 }
 
-
 TEST(GirderProtocol, TheCliRunsOneGirderOfAFamilyAndKeepsItsDataset) {
   IoTempDir tmp;
-  const auto run = testing::run_cli("evaluate --protocol girders --count 3 --seed 5 --min-length 6 --max-length 6 "
-                                    "--girder 1 --keep-datasets -q --out " + tmp.file("out"));
-  ASSERT_EQ(run.exit_code, 0) << run.err;
-  const nlohmann::json j = nlohmann::json::parse(testing::slurp(tmp.file("out/girders.json")));
+  const nlohmann::json j =
+      run_girders_cli(tmp, "--count 3 --seed 5 --min-length 6 --max-length 6 --girder 1 --keep-datasets");
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["only"], nlohmann::json::array({1}));
   ASSERT_EQ(j["girders"].size(), 1u);
   EXPECT_EQ(j["girders"][0]["index"], 1);
