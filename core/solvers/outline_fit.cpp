@@ -133,12 +133,14 @@ std::optional<OutlineFit> fit_manhole_outline(const std::vector<std::vector<Eige
   std::vector<Eigen::Vector2d> ellipse_shifts, rect_shifts;
   f.ellipse_residual_m = solve<EllipseResidual, 4>(views, shift_sigma_m, ellipse, ellipse_shifts);
   f.rectangle_residual_m = solve<RoundedRectangleResidual, 5>(views, shift_sigma_m, rect, rect_shifts);
-  // The outline sits where the largest view put it; the views put it, on average, there less
-  // their mean shift.
-  const auto mean_shift = [](const std::vector<Eigen::Vector2d>& shifts) {
+  // The outline sits where the largest view put it; the views of some rim put it, on average,
+  // there less their mean shift.
+  const auto mean_shift = [&views](const std::vector<Eigen::Vector2d>& shifts) {
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-    for (const Eigen::Vector2d& s : shifts) sum += s;
-    return Eigen::Vector2d(sum / static_cast<double>(shifts.size()));
+    int counted = 0;
+    for (std::size_t v = 0; v < views.size(); ++v)
+      if (views[v].size() >= kMinShiftedViewPoints) sum += shifts[v], ++counted;
+    return counted > 0 ? Eigen::Vector2d(sum / counted) : Eigen::Vector2d::Zero();
   };
   // The rounded rectangle has one parameter more: it must fit clearly better to be the shape.
   if (f.rectangle_residual_m < 0.7 * f.ellipse_residual_m) {

@@ -24,7 +24,7 @@ std::optional<OutlineFit> fit_manhole_outline(const std::vector<Eigen::Vector2d>
 
 // The rims of several views of one opening, each view of 20 points or more free to shift by
 // about `shift_sigma_m` in the plate's plane from the view with the most points (a pose's error
-// moves the whole view): the outline they agree on. Its centre is where the views put it on
+// moves the whole view): the outline they agree on. Its centre is where those views put it on
 // average, each view alike. `shift_sigma_m` 0 pools them as they are.
 std::optional<OutlineFit> fit_manhole_outline(const std::vector<std::vector<Eigen::Vector2d>>& views,
                                               double shift_sigma_m);
