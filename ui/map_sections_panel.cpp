@@ -145,8 +145,10 @@ void MapSectionsPanel::add_diaphragms(const StationMap& map) {
   if (plates.empty()) return;
   diaphragms_ = group(tree_, tr("Diaphragms (%1)").arg(plates.size()));
   for (const Diaphragm& d : plates) {
-    const QString opening = d.manhole ? tr("manhole %1 × %2 m").arg(d.manhole->width_m, 0, 'f', 3).arg(d.manhole->height_m, 0, 'f', 3)
-                                      : tr("no manhole");
+    const QString opening = d.manhole    ? tr("manhole %1 × %2 m").arg(d.manhole->width_m, 0, 'f', 3).arg(d.manhole->height_m, 0, 'f', 3)
+                            : d.kind == "end_wall" ? tr("end wall")
+                            : d.closed             ? tr("closed: no opening")
+                                                   : tr("no manhole");
     row(diaphragms_, d.station_m,
         {QString::number(d.station_m, 'f', 3), opening, QString(), QString(), QString::number(d.seen_by_frames)});
   }

@@ -111,27 +111,83 @@ void walls_near(const StationMap& map, double s, double half, double out[4]) {
   }
 }
 
-// The area of a plate's views that lies inside both cross-sections beside it: each wall at the
-// nearer of its positions just before and just after the plate, `cell` in from it. A step face
+// The box inside both cross-sections beside station `s`: each wall at the nearer of its
+// positions just before and just after it, `cell` in from it. False when a wall was measured on
+// neither side.
+bool box_inside_both_sections(const StationMap& map, double s, double cell, double inner[4]) {
+  const double side = 0.3;  // how far along the girder each side's walls are taken
+  double before[4], after[4];
+  walls_near(map, s - side, side, before);
+  walls_near(map, s + side, side, after);
+  for (int c = 0; c < 4; ++c) {
+    inner[c] = std::fmin(before[c], after[c]) - cell;
+    if (std::isnan(inner[c])) return false;
+  }
+  return true;
+}
+
+// The area of a plate's views that lies inside both cross-sections beside it. A step face
 // where the section changes lies between the two sections' walls, outside this box; a plate
 // across the girder fills it, however little of the plate the frames saw (one seen only
 // through the opening of a plate before it). NaN when a wall was measured on neither side.
 double area_inside_both_sections(const StationMap& map, const std::vector<const PlateView*>& group, double s,
                                  double cell) {
-  const double side = 0.3;  // how far along the girder each side's walls are taken
-  double before[4], after[4], inner[4];
-  walls_near(map, s - side, side, before);
-  walls_near(map, s + side, side, after);
-  for (int c = 0; c < 4; ++c) {
-    inner[c] = std::fmin(before[c], after[c]) - cell;
-    if (std::isnan(inner[c])) return kNaN;
-  }
+  double inner[4];
+  if (!box_inside_both_sections(map, s, cell, inner)) return kNaN;
   std::set<std::pair<long, long>> cells;
   for (const PlateView* v : group)
     for (const Eigen::Vector3d& p : v->samples)
       if (p.y() < inner[0] && -p.y() < inner[1] && p.z() < inner[2] && -p.z() < inner[3])
         cells.insert({std::lround(std::floor(p.y() / cell)), std::lround(std::floor(p.z() / cell))});
   return static_cast<double>(cells.size()) * cell * cell;
+}
+
+// Whether the plate's views cover the box inside the sections beside it but for less than a
+// manhole: a plate seen closed across the girder (false when its walls are unknown). Cells count
+// by their centres, inside the box or not, so that the cells its edge cuts are not all covered.
+bool seen_closed(const StationMap& map, const std::vector<const PlateView*>& group, double s,
+                 const GirderStructureOptions& o) {
+  double inner[4];
+  if (!box_inside_both_sections(map, s, o.cell_m, inner)) return false;
+  const double cell = o.cell_m;
+  const auto in_box = [&](long i, long j) {
+    const double y = (static_cast<double>(i) + 0.5) * cell, z = (static_cast<double>(j) + 0.5) * cell;
+    return y < inner[0] && -y < inner[1] && z < inner[2] && -z < inner[3];
+  };
+  std::set<std::pair<long, long>> covered;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& p : v->samples) {
+      const long i = std::lround(std::floor(p.y() / cell)), j = std::lround(std::floor(p.z() / cell));
+      if (in_box(i, j)) covered.insert({i, j});
+    }
+  long open_cells = 0;
+  for (long i = std::lround(std::floor(-inner[1] / cell)); i * cell < inner[0]; ++i)
+    for (long j = std::lround(std::floor(-inner[3] / cell)); j * cell < inner[2]; ++j)
+      open_cells += in_box(i, j) && !covered.count({i, j}) ? 1 : 0;
+  return static_cast<double>(open_cells) * cell * cell < o.max_closed_gap_m2;
+}
+
+// The share of the middle of a fitted outline (within 0.7 of its size) that the plate's
+// views cover, in cells: near 0 through an opening. Depth spikes behind a plate's surface put
+// rim points anywhere on it; the plate seen all around them shows there is no opening there.
+double plate_inside_outline(const std::vector<const PlateView*>& group, const OutlineFit& fit, double cell) {
+  const double inner = 0.7;
+  const double a = inner * fit.half_width_m, b = inner * fit.half_height_m;
+  if (a < cell || b < cell) return 0.0;
+  const auto inside = [&](double y, double z) {
+    const double u = (y - fit.center.x()) / a, v = (z - fit.center.y()) / b;
+    return u * u + v * v < 1.0;
+  };
+  std::set<std::pair<long, long>> covered;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& p : v->samples)
+      if (inside(p.y(), p.z()))
+        covered.insert({std::lround(std::floor(p.y() / cell)), std::lround(std::floor(p.z() / cell))});
+  int cells = 0;
+  for (long i = std::lround(std::floor((fit.center.x() - a) / cell)); i * cell <= fit.center.x() + a; ++i)
+    for (long j = std::lround(std::floor((fit.center.y() - b) / cell)); j * cell <= fit.center.y() + b; ++j)
+      cells += inside((i + 0.5) * cell, (j + 0.5) * cell) ? 1 : 0;
+  return cells > 0 ? std::min(1.0, static_cast<double>(covered.size()) / cells) : 0.0;
 }
 
 const Section* section_at(const StationMap& map, double s) {
@@ -168,6 +224,11 @@ void measure_manhole(const StationMap& map, const std::vector<const PlateView*>&
   const std::optional<OutlineFit> fit = fit_manhole_outline(rim);
   if (!fit) {
     d.manhole_reason = "the opening's rim could not be fitted";
+    return;
+  }
+  if (plate_inside_outline(group, *fit, o.cell_m) >= 0.5) {
+    d.manhole_reason = "no opening seen: the plate was seen where its " + std::to_string(rim.size()) +
+                       " rim points lie (depth spikes behind it)";
     return;
   }
   const int directions = rim_directions(rim, fit->center);
@@ -232,9 +293,36 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     d.normal = (n.x() * f.axis + n.y() * f.left() + n.z() * f.up).normalized();
     d.seen_by_frames = static_cast<int>(frames.size());
     measure_manhole(map, group, o, d);
+    // Without an opening measured, a plate seen whole tells there is none (rim points it has are
+    // depth spikes); one seen in part keeps its reason.
+    d.closed = !d.manhole && seen_closed(map, group, d.station_m, o);
+    if (d.closed) d.manhole_reason = "no opening: the plate was seen closed across the section";
     out.push_back(d);
   }
   return out;
+}
+
+// Whether a station farther than `margin` beyond station `s` (in direction `dir`, +1 or -1)
+// measured the box: a wall's samples at a plate's corner spill a few millimetres past it.
+bool measured_beyond(const StationMap& map, double s, int dir, double margin) {
+  for (const Station& st : map.stations)
+    if (dir * (st.station_m - s) > margin &&
+        (st.width_source == DimensionSource::Measured || st.height_source == DimensionSource::Measured))
+      return true;
+  return false;
+}
+
+// Whether the first (or last) plate is closed and nothing was measured before (after) it.
+bool ends_girder(const StationMap& map, const std::vector<Diaphragm>& plates, bool first,
+                 const GirderStructureOptions& o) {
+  if (plates.empty()) return false;
+  const Diaphragm& d = first ? plates.front() : plates.back();
+  return d.closed && !measured_beyond(map, d.station_m, first ? -1 : +1, o.compartment_margin_m);
+}
+
+void mark_end_walls(const StationMap& map, const GirderStructureOptions& o, std::vector<Diaphragm>& plates) {
+  if (ends_girder(map, plates, true, o)) plates.front().kind = "end_wall";
+  if (ends_girder(map, plates, false, o)) plates.back().kind = "end_wall";
 }
 
 std::vector<Compartment> find_compartments(const StationMap& map, const std::vector<Diaphragm>& plates,
@@ -252,6 +340,9 @@ std::vector<Compartment> find_compartments(const StationMap& map, const std::vec
     c.closed_from = k > 0;
     c.closed_to = k + 1 < bounds.size() - 1;
     if (c.to_m - c.from_m < step) continue;  // a plate at the very end of the observed extent
+    // Beyond an end wall is no girder (its corner's samples may make a station there).
+    if ((k == 0 && ends_girder(map, plates, true, o)) || (k + 2 == bounds.size() && ends_girder(map, plates, false, o)))
+      continue;
     std::vector<double> w, h;
     const double lo = c.from_m + (c.closed_from ? o.compartment_margin_m : 0.0);
     const double hi = c.to_m - (c.closed_to ? o.compartment_margin_m : 0.0);
@@ -336,6 +427,7 @@ GirderStructure build_girder_structure(const StationMap& map, const std::vector<
                                        const GirderStructureOptions& options) {
   GirderStructure g;
   g.diaphragms = find_diaphragms(map, views, options);
+  mark_end_walls(map, options, g.diaphragms);
   g.compartments = find_compartments(map, g.diaphragms, options);
   g.centreline = find_centreline(map);
   for (Diaphragm& d : g.diaphragms) d.point = centreline_at(map, g.centreline, d.station_m);

@@ -36,11 +36,15 @@ struct Manhole {
 };
 
 struct Diaphragm {
+  // "diaphragm", or "end_wall": closed across the girder where its views saw it, and nothing was
+  // measured beyond it (the girder ends there for the robot).
+  std::string kind = "diaphragm";
   double station_m = 0.0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // world: the centre line at the plate
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // world frame, along the axis
   int seen_by_frames = 0;
   double area_m2 = 0.0;  // plate area seen (5 cm cells)
+  bool closed = false;  // its views covered the section but for less than a manhole: no opening
   std::optional<Manhole> manhole;
   std::string manhole_reason;  // why there is no manhole
 };
@@ -71,6 +75,9 @@ struct GirderStructureOptions {
   double max_fit_mm = 12.0;          // median distance of the rim from the outline
   double view_shift_sigma_m = 0.02;  // how far a frame's pose error may move its view of a plate (0: none)
   double compartment_margin_m = 0.2; // stations this close to a plate do not measure the box
+  // A plate whose views leave less than this of the box inside the sections beside it uncovered
+  // is closed: smaller than any manhole a person or robot climbs through (about 0.3 x 0.4 m).
+  double max_closed_gap_m2 = 0.05;
 };
 
 struct GirderStructure {

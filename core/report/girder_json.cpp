@@ -45,7 +45,8 @@ void add_girder_json(const GirderStructure& g, nlohmann::json& doc) {
                           {"point", rounded(c.point, 1e-4)},
                           {"source", c.source}});
   for (const Diaphragm& d : g.diaphragms) {
-    nlohmann::json j = {{"station_m", round_to(d.station_m, 1e-4)},
+    nlohmann::json j = {{"kind", d.kind},
+                        {"station_m", round_to(d.station_m, 1e-4)},
                         {"point", rounded(d.point, 1e-4)},
                         {"normal", rounded(d.normal, 1e-5)},
                         {"seen_by_frames", d.seen_by_frames},
@@ -71,7 +72,7 @@ std::string diaphragms_csv(const GirderStructure& g) {
   out.imbue(std::locale::classic());
   out << "station_m,normal_x,normal_y,normal_z,seen_by_frames,area_m2,manhole_x,manhole_y,manhole_z,"
          "manhole_width_m,manhole_height_m,manhole_shape,clearance_left_m,clearance_right_m,"
-         "clearance_top_m,clearance_bottom_m,manhole_reason\n";
+         "clearance_top_m,clearance_bottom_m,manhole_reason,kind\n";
   const auto num = [&](double v, double unit) {
     if (std::isfinite(v)) out << round_to(v, unit);
   };
@@ -87,10 +88,10 @@ std::string diaphragms_csv(const GirderStructure& g) {
       out << ',', num(m.height_m, 1e-4);
       out << ',' << m.shape;
       for (int k = 0; k < 4; ++k) out << ',', num(m.clearance_m[k], 1e-4);
-      out << ",\n";
+      out << ",," << d.kind << "\n";
     } else {
       // The reason may hold commas: quoted as CSV wants.
-      out << ",,,,,,,,,,\"" << d.manhole_reason << "\"\n";
+      out << ",,,,,,,,,,\"" << d.manhole_reason << "\"," << d.kind << "\n";
     }
   }
   return out.str();

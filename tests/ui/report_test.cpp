@@ -132,14 +132,21 @@ TEST(InspectionReport, ListsEachDiaphragmWithItsManholeOrWhyItHasNone) {
   closed.station_m = 8.034;
   closed.seen_by_frames = 3;
   closed.manhole_reason = "the rim was seen on 4 of 8 sides";
-  map.girder.diaphragms = {open, closed};
+  Diaphragm end;
+  end.kind = "end_wall";
+  end.closed = true;
+  end.station_m = 12.51;
+  end.seen_by_frames = 6;
+  end.manhole_reason = "no opening: the plate was seen closed across the section";
+  map.girder.diaphragms = {open, closed, end};
   const std::string pdf = dir + "/report.pdf";
   write_inspection_report(pdf, report_input(map, write_fake_map_png(dir)));
   const std::string text = pdf_text(pdf);
   EXPECT_NE(text.find("Diaphragms and manholes"), std::string::npos);
   for (const char* value : {"4.012", "0.452", "0.748", "0.262", "0.170", "rounded rectangle (r 0.080)", "8.034",
-                            "the rim was seen on 4 of 8"})  // the reason wraps in its column
+                            "the rim was seen on 4 of 8", "D1", "D2", "end wall", "12.510"})  // the reason wraps in its column
     EXPECT_NE(text.find(value), std::string::npos) << value;
+  EXPECT_EQ(text.find("D3"), std::string::npos);  // the end wall is not numbered as a diaphragm
   expect_words_inside_margins(pdf);
 }
 

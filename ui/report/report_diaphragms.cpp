@@ -23,7 +23,8 @@ QString least_clearance(const Manhole& m) {
 
 Row plate_row(std::size_t i, const Diaphragm& d) {
   Row r;
-  r.cells << QStringLiteral("D%1").arg(i + 1) << fixed(d.station_m, 3) << QString::number(d.seen_by_frames);
+  const QString name = d.kind == "end_wall" ? QStringLiteral("end wall") : QStringLiteral("D%1").arg(i + 1);
+  r.cells << name << fixed(d.station_m, 3) << QString::number(d.seen_by_frames);
   if (!d.manhole) {
     r.cells << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-")
             << QString::fromStdString(d.manhole_reason);
@@ -47,7 +48,7 @@ void add_diaphragms_table(Document& doc, const StationMap& m) {
   }
   std::vector<Row> rows;
   for (std::size_t i = 0; i < plates.size(); ++i) rows.push_back(plate_row(i, plates[i]));
-  const std::vector<Column> cols = {{QStringLiteral("Plate"), 0.6, Qt::AlignLeft},
+  const std::vector<Column> cols = {{QStringLiteral("Plate"), 0.8, Qt::AlignLeft},
                                     num(QStringLiteral("Station (m)")),
                                     num(QStringLiteral("Frames"), 0.9),
                                     num(QStringLiteral("Manhole width (m)"), 1.2),

@@ -4,18 +4,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "core/mapping/girder_structure.h"
 #include "core/mapping/station_map.h"
 #include "core/util/build_paths.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/io_temp_dir.h"
 #include "tests/support/shared_cli_fixture.h"
 
 namespace tunnelmap {
 namespace {
 
 using testing::CliRun;
+using testing::IoTempDir;
 using testing::run_cli;
 using testing::slurp;
 
@@ -61,6 +65,7 @@ TEST_F(GirderWalk, EveryPlateIsFoundWithin20mmAndNoneIsInvented) {
     EXPECT_NEAR(plates[k]["point"][0].get<double>(), truth[k]["point"][0].get<double>(), 0.02) << k;
     EXPECT_GT(std::abs(plates[k]["normal"][0].get<double>()), 0.99);
     EXPECT_GE(plates[k]["seen_by_frames"].get<int>(), 2);
+    EXPECT_EQ(plates[k]["kind"], "diaphragm");  // each has its opening; no end wall was seen
   }
 }
 
@@ -118,6 +123,36 @@ TEST_F(GirderWalk, TheDiaphragmCsvHasARowPerPlate) {
   const std::string csv = slurp(shared.file("plates.csv"));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4);  // header + 3 plates
   EXPECT_NE(csv.find("ellipse"), std::string::npos);
+  EXPECT_EQ(csv.find(",manhole_reason,kind\n"), csv.find('\n') - 20);  // the header's last columns
+  std::size_t rows_ending_in_kind = 0;
+  for (std::size_t at = csv.find(",diaphragm\n"); at != std::string::npos; at = csv.find(",diaphragm\n", at + 1))
+    ++rows_ending_in_kind;
+  EXPECT_EQ(rows_ending_in_kind, 3u);
+}
+
+TEST_F(GirderWalk, APoseMetresOffIsToldAsUncheckedNotMappedSilently) {
+  // The walk with stop 3 (frames 6 and 7) reported 10 m farther along the girder than it stood:
+  // what it saw lands where no other frame looked, so nothing can tie it to the map.
+  IoTempDir copy;
+  std::filesystem::copy(shared.file("walk"), copy.file("walk"), std::filesystem::copy_options::recursive);
+  nlohmann::json d = dataset;
+  int moved = 0;
+  for (nlohmann::json& f : d["frames"])
+    if (f["pose_group"] == 3) f["pose"][3] = f["pose"][3].get<double>() + 10.0, ++moved;
+  ASSERT_EQ(moved, 2);
+  std::ofstream(copy.file("walk/dataset.json")) << d.dump();
+  const CliRun run = run_cli("map " + copy.file("walk") + " --params " + kFieldPreset + " --json " + copy.file("m.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("pose 3 (frames 6-7): nothing it saw was seen from another pose, so nothing checks it"),
+            std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("nothing it saw"), run.out.find("nothing it saw", run.out.find("pose 3 (frames 6-7)")))
+      << "only the moved stop: " << run.out;
+  EXPECT_EQ(run.out.find("nothing it saw", run.out.find("pose 3 (frames 6-7)") + 30), std::string::npos) << run.out;
+  const nlohmann::json m = nlohmann::json::parse(slurp(copy.file("m.json")));
+  for (const nlohmann::json& p : m["poses"])
+    EXPECT_EQ(p["refinement"]["constrained"].empty(), p["group"] == 3) << p.dump();
+  // The walk as simulated has no such pose.
+  EXPECT_EQ(map.out.find("nothing it saw"), std::string::npos) << map.out;
 }
 
 TEST_F(GirderWalk, ThePlyMapHoldsEachPlateWithItsOpening) {
@@ -128,15 +163,16 @@ TEST_F(GirderWalk, ThePlyMapHoldsEachPlateWithItsOpening) {
 
 
 // A straight map, stations every 0.1 m over 8 m: a 0.90 x 1.20 m section up to station 6, then
-// 0.80 x 1.10 m (a 50 mm step on every wall).
-StationMap two_section_map() {
+// 0.80 x 1.10 m (a 50 mm step on every wall). `widen_m`: both sections that much wider and higher.
+StationMap two_section_map(double widen_m = 0.0) {
   StationMap m;
   m.ok = true;
   m.line = Centreline::straight(m.origin, m.axis, m.up);
   for (int k = 0; k < 80; ++k) {
     Station st;
     st.station_m = 0.05 + 0.1 * k;
-    const double half_w = st.station_m < 6.0 ? 0.45 : 0.40, half_h = st.station_m < 6.0 ? 0.60 : 0.55;
+    const double half_w = (st.station_m < 6.0 ? 0.45 : 0.40) + widen_m / 2;
+    const double half_h = (st.station_m < 6.0 ? 0.60 : 0.55) + widen_m / 2;
     st.width_m = 2 * half_w, st.height_m = 2 * half_h;
     st.width_source = st.height_source = DimensionSource::Measured;
     st.frames = 3;
@@ -144,7 +180,7 @@ StationMap two_section_map() {
     st.wall_m[2] = st.wall_m[3] = half_h;
     m.stations.push_back(st);
   }
-  m.sections = {{0.0, 6.0, 0.90, 1.20}, {6.0, 8.0, 0.80, 1.10}};
+  m.sections = {{0.0, 6.0, 0.90 + widen_m, 1.20 + widen_m}, {6.0, 8.0, 0.80 + widen_m, 1.10 + widen_m}};
   return m;
 }
 
@@ -260,6 +296,127 @@ TEST(GirderPlates, AManholesSizeDoesNotGrowWithThePosesDisagreement) {
   const GirderStructure p = build_girder_structure(map, views, pooled);
   ASSERT_TRUE(p.diaphragms.at(0).manhole);
   EXPECT_GT(p.diaphragms[0].manhole->height_m, 0.70 + 0.004);
+}
+
+// Rim points scattered over a plate, as depth spikes behind its surface give them: `count` points
+// on a spiral from the middle out to (`half_y`, `half_z`), around (`y0`, `z0`).
+std::vector<Eigen::Vector3d> spike_rims(double station, int count, double y0, double z0, double half_y, double half_z) {
+  std::vector<Eigen::Vector3d> out;
+  for (int k = 0; k < count; ++k) {
+    const double a = 2.4 * k, r = std::sqrt((k + 0.5) / count);
+    out.push_back({station, y0 + half_y * r * std::cos(a), z0 + half_z * r * std::sin(a)});
+  }
+  return out;
+}
+
+TEST(GirderPlates, AClosedPlateAtTheEndOfTheMapIsTheGirdersEndWall) {
+  // A diaphragm with its manhole at 3 m, a plate seen closed at 5 m (stations measured beyond
+  // it) and another at 7.88 m, beyond which only the last station's centre lies (its corner's
+  // samples). Both closed plates carry spikes' rim points all over them.
+  const StationMap map = two_section_map();
+  const auto all = [](double, double) { return true; };
+  std::vector<PlateView> views;
+  for (int f = 0; f < 3; ++f) {
+    views.push_back(shifted_manhole_view(f, 3.0, 0.0, 0.0));
+    views.push_back(face_view(f, 5.0, all));
+    views.push_back(face_view(f, 7.88, all));
+    for (PlateView* v : {&views[views.size() - 2], &views.back()})
+      v->rim = spike_rims(v->samples.front().x(), 30, 0.0, 0.0, 0.35, 0.5);
+  }
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 3u);
+  EXPECT_EQ(g.diaphragms[0].kind, "diaphragm");
+  EXPECT_TRUE(g.diaphragms[0].manhole);
+  EXPECT_FALSE(g.diaphragms[0].closed);
+  for (int k : {1, 2}) {
+    const Diaphragm& d = g.diaphragms[static_cast<std::size_t>(k)];
+    EXPECT_TRUE(d.closed) << k;
+    EXPECT_FALSE(d.manhole) << k;
+    EXPECT_EQ(d.manhole_reason, "no opening: the plate was seen closed across the section") << k;
+  }
+  EXPECT_EQ(g.diaphragms[1].kind, "diaphragm");  // the map goes on beyond it
+  EXPECT_EQ(g.diaphragms[2].kind, "end_wall");
+  // No compartment past the end wall, although the last station (7.95 m) lies 7 cm beyond it.
+  ASSERT_FALSE(g.compartments.empty());
+  EXPECT_NEAR(g.compartments.back().to_m, 7.88, 1e-9);
+  EXPECT_TRUE(g.compartments.back().closed_to);
+
+  // The same plate at 7 m, with the girder measured beyond it, is a diaphragm without an opening.
+  for (PlateView& v : views)
+    if (v.samples.front().x() > 7) {
+      for (Eigen::Vector3d& p : v.samples) p.x() = 7.0;
+      for (Eigen::Vector3d& p : v.rim) p.x() = 7.0;
+    }
+  const GirderStructure inside = build_girder_structure(map, views);
+  ASSERT_EQ(inside.diaphragms.size(), 3u);
+  EXPECT_EQ(inside.diaphragms[2].kind, "diaphragm");
+  EXPECT_TRUE(inside.diaphragms[2].closed);
+}
+
+TEST(GirderPlates, ASmallManholeIsNotClosedByTheCellsTheSectionsEdgeCuts) {
+  // Walls 2.6 cm into a 5 cm cell (a 0.952 x 1.252 m section), the plate seen to 2 cm past them,
+  // and a 0.30 x 0.40 m manhole (0.094 m2). Every cell the box's edge cuts holds plate samples;
+  // counted whole, they would cover more than the opening leaves uncovered.
+  const StationMap map = two_section_map(0.052);
+  const auto in_manhole = [](double y, double z) { return std::pow(y / 0.15, 2) + std::pow(z / 0.20, 2) < 1.0; };
+  std::vector<PlateView> views;
+  for (int f = 0; f < 3; ++f) {
+    PlateView v;
+    v.frame = f;
+    for (double y = -0.496; y <= 0.496; y += 0.02)
+      for (double z = -0.646; z <= 0.646; z += 0.02)
+        if (!in_manhole(y, z)) v.samples.push_back({3.0, y, z}), v.weights.push_back(64);
+    for (int k = 0; k < 120; ++k) {
+      const double a = 2 * M_PI * k / 120;
+      v.rim.push_back({3.0, 0.15 * std::cos(a), 0.20 * std::sin(a)});
+    }
+    views.push_back(v);
+  }
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 1u);
+  EXPECT_FALSE(g.diaphragms[0].closed);
+  ASSERT_TRUE(g.diaphragms[0].manhole) << g.diaphragms[0].manhole_reason;
+  EXPECT_NEAR(g.diaphragms[0].manhole->width_m, 0.30, 0.005);
+  EXPECT_NEAR(g.diaphragms[0].manhole->height_m, 0.40, 0.005);
+
+  // Without its rim (an opening no frame saw the edge of) the plate is still not closed.
+  for (PlateView& v : views) v.rim.clear();
+  const GirderStructure unseen = build_girder_structure(map, views);
+  ASSERT_EQ(unseen.diaphragms.size(), 1u);
+  EXPECT_FALSE(unseen.diaphragms[0].closed);
+  EXPECT_EQ(unseen.diaphragms[0].manhole_reason, "no opening seen in the plate");
+}
+
+TEST(GirderPlates, RimPointsWhereThePlateWasSeenAreNoOpening) {
+  // A plate at 3 m seen only in its upper half (not closed, as far as the frames tell), with 60
+  // spikes' rim points scattered over what they saw. The fit of those points lies on plate.
+  const StationMap map = two_section_map();
+  std::vector<PlateView> views;
+  for (int f = 0; f < 2; ++f) {
+    views.push_back(face_view(f, 3.0, [](double, double z) { return z > 0.0; }));
+    views.back().rim = spike_rims(3.0, 30, 0.0, 0.3, 0.4, 0.25);
+  }
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 1u);
+  EXPECT_FALSE(g.diaphragms[0].closed);
+  EXPECT_FALSE(g.diaphragms[0].manhole);
+  EXPECT_EQ(g.diaphragms[0].manhole_reason.rfind("no opening seen: the plate was seen where its 60 rim points lie", 0), 0u)
+      << g.diaphragms[0].manhole_reason;
+  EXPECT_EQ(g.diaphragms[0].kind, "diaphragm");
+
+  // A real opening there, seen from the same frames: measured.
+  const auto in_manhole = [](double y, double z) { return std::pow(y / 0.25, 2) + std::pow((z - 0.3) / 0.2, 2) < 1.0; };
+  for (PlateView& v : views) {
+    v = face_view(v.frame, 3.0, [&](double y, double z) { return z > 0.0 && !in_manhole(y, z); });
+    for (int k = 0; k < 120; ++k) {
+      const double a = 2 * M_PI * k / 120;
+      v.rim.push_back({3.0, 0.25 * std::cos(a), 0.3 + 0.2 * std::sin(a)});
+    }
+  }
+  const GirderStructure real = build_girder_structure(map, views);
+  ASSERT_EQ(real.diaphragms.size(), 1u);
+  ASSERT_TRUE(real.diaphragms[0].manhole) << real.diaphragms[0].manhole_reason;
+  EXPECT_NEAR(real.diaphragms[0].manhole->width_m, 0.50, 0.005);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "core/evaluation/girder_scoring.h"
 #include "core/io/dataset.h"
 #include "core/mapping/dataset_mapping.h"
+#include "core/mapping/gravity_agreement.h"
 #include "core/params/parameters.h"
 #include "core/pipeline/pipeline.h"
 #include "core/sim/sim_dataset_writer.h"
@@ -33,11 +34,22 @@ SimConfig drifted_walk_with_imu() {
   return c;
 }
 
-GirderScore mapped(const Dataset& ds) {
+Pipeline field_pipeline() {
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/field.json");
-  Pipeline pipeline(params);
+  return Pipeline(params);
+}
+
+GirderScore mapped(const Dataset& ds) {
+  Pipeline pipeline = field_pipeline();
   return score_girder(map_dataset(ds, pipeline, true), ds.ground_truth, ds.raw["frames"]);
+}
+
+// The frames' gravity against the poses mapped with it.
+GravityAgreement agreement_when_mapped(const Dataset& ds) {
+  Pipeline pipeline = field_pipeline();
+  const DatasetMapping dm = map_dataset(ds, pipeline, true);
+  return gravity_agreement(dm.mapped.poses, dataset_gravity(ds), ds.up);
 }
 
 double p95(std::vector<double> v) {
@@ -62,6 +74,31 @@ TEST(ImuGravity, ADriftedWalkMappedWithItsGravityEndsCloserToTheTruthVerticallyA
   // The IMU's own noise: a tilt of 0.1 degrees on each of two axes is 0.245 degrees at p95.
   EXPECT_LT(p95(tilt_a), 0.245);
   EXPECT_LT(p95(a.pose_error_vertical_mm), p95(b.pose_error_vertical_mm));
+}
+
+TEST(ImuGravity, AnImuNoisierThanTheEstimateWeighsItIsToldWithItsNoise) {
+  // The walk's IMU at 1 degree per axis where slam.gravity_deg says 0.1: the walls hold the
+  // tilt, so the frames' gravity stays about its own noise away from the mapped poses' down.
+  IoTempDir tmp;
+  SimConfig c = drifted_walk_with_imu();
+  c.imu_gravity_deg = 1.0;
+  write_sim_dataset(tmp.file("walk"), c);
+  const GravityAgreement noisy = agreement_when_mapped(read_dataset(tmp.file("walk")));
+  ASSERT_TRUE(noisy.per_axis_deg());
+  std::printf("IMU at 1 deg: %.3f deg per axis over %d frames\n", *noisy.per_axis_deg(), noisy.frames);
+  EXPECT_GT(*noisy.per_axis_deg(), 0.5);
+  EXPECT_LT(*noisy.per_axis_deg(), 1.5);
+  const std::string note = gravity_noise_note(noisy, 0.1);
+  EXPECT_NE(note.find("more than 3 x slam.gravity_deg = 0.1"), std::string::npos) << note;
+  EXPECT_TRUE(gravity_noise_note(noisy, 1.0).empty());  // weighed as it is
+
+  // At 0.1 degrees, as the estimate weighs it: nothing to tell.
+  IoTempDir good;
+  write_sim_dataset(good.file("walk"), drifted_walk_with_imu());
+  const GravityAgreement fine = agreement_when_mapped(read_dataset(good.file("walk")));
+  ASSERT_TRUE(fine.per_axis_deg());
+  EXPECT_LT(*fine.per_axis_deg(), 0.2);
+  EXPECT_TRUE(gravity_noise_note(fine, 0.1).empty());
 }
 
 TEST(ImuGravity, ExactPosesWithANoisyGravityAreKeptAsGiven) {
