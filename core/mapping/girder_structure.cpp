@@ -16,6 +16,11 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// The 5 cm cell (lateral, vertical) a plate's sample falls in: areas are counted in cells.
+using Cell = std::pair<long, long>;
+long cell_index(double v, double cell) { return std::lround(std::floor(v / cell)); }
+Cell cell_of(const Eigen::Vector3d& p, double cell) { return {cell_index(p.y(), cell), cell_index(p.z(), cell)}; }
+
 double weighted_station(const PlateView& v) {
   double s = 0, w = 0;
   for (std::size_t i = 0; i < v.samples.size(); ++i) s += v.samples[i].x() * v.weights[i], w += v.weights[i];
@@ -86,10 +91,10 @@ Eigen::Vector3d plate_normal(const std::vector<const PlateView*>& group) {
 }
 
 double plate_area(const std::vector<const PlateView*>& group, double cell) {
-  std::set<std::pair<long, long>> cells;
+  std::set<Cell> cells;
   for (const PlateView* v : group)
     for (const Eigen::Vector3d& s : v->samples)
-      cells.insert({std::lround(std::floor(s.y() / cell)), std::lround(std::floor(s.z() / cell))});
+      cells.insert(cell_of(s, cell));
   return static_cast<double>(cells.size()) * cell * cell;
 }
 
@@ -134,11 +139,11 @@ double area_inside_both_sections(const StationMap& map, const std::vector<const 
                                  double cell) {
   double inner[4];
   if (!box_inside_both_sections(map, s, cell, inner)) return kNaN;
-  std::set<std::pair<long, long>> cells;
+  std::set<Cell> cells;
   for (const PlateView* v : group)
     for (const Eigen::Vector3d& p : v->samples)
       if (p.y() < inner[0] && -p.y() < inner[1] && p.z() < inner[2] && -p.z() < inner[3])
-        cells.insert({std::lround(std::floor(p.y() / cell)), std::lround(std::floor(p.z() / cell))});
+        cells.insert(cell_of(p, cell));
   return static_cast<double>(cells.size()) * cell * cell;
 }
 
@@ -154,15 +159,15 @@ bool seen_closed(const StationMap& map, const std::vector<const PlateView*>& gro
     const double y = (static_cast<double>(i) + 0.5) * cell, z = (static_cast<double>(j) + 0.5) * cell;
     return y < inner[0] && -y < inner[1] && z < inner[2] && -z < inner[3];
   };
-  std::set<std::pair<long, long>> covered;
+  std::set<Cell> covered;
   for (const PlateView* v : group)
     for (const Eigen::Vector3d& p : v->samples) {
-      const long i = std::lround(std::floor(p.y() / cell)), j = std::lround(std::floor(p.z() / cell));
-      if (in_box(i, j)) covered.insert({i, j});
+      const Cell c = cell_of(p, cell);
+      if (in_box(c.first, c.second)) covered.insert(c);
     }
   long open_cells = 0;
-  for (long i = std::lround(std::floor(-inner[1] / cell)); i * cell < inner[0]; ++i)
-    for (long j = std::lround(std::floor(-inner[3] / cell)); j * cell < inner[2]; ++j)
+  for (long i = cell_index(-inner[1], cell); i * cell < inner[0]; ++i)
+    for (long j = cell_index(-inner[3], cell); j * cell < inner[2]; ++j)
       open_cells += in_box(i, j) && !covered.count({i, j}) ? 1 : 0;
   return static_cast<double>(open_cells) * cell * cell < o.max_closed_gap_m2;
 }
@@ -178,14 +183,14 @@ double plate_inside_outline(const std::vector<const PlateView*>& group, const Ou
     const double u = (y - fit.center.x()) / a, v = (z - fit.center.y()) / b;
     return u * u + v * v < 1.0;
   };
-  std::set<std::pair<long, long>> covered;
+  std::set<Cell> covered;
   for (const PlateView* v : group)
     for (const Eigen::Vector3d& p : v->samples)
       if (inside(p.y(), p.z()))
-        covered.insert({std::lround(std::floor(p.y() / cell)), std::lround(std::floor(p.z() / cell))});
+        covered.insert(cell_of(p, cell));
   int cells = 0;
-  for (long i = std::lround(std::floor((fit.center.x() - a) / cell)); i * cell <= fit.center.x() + a; ++i)
-    for (long j = std::lround(std::floor((fit.center.y() - b) / cell)); j * cell <= fit.center.y() + b; ++j)
+  for (long i = cell_index(fit.center.x() - a, cell); i * cell <= fit.center.x() + a; ++i)
+    for (long j = cell_index(fit.center.y() - b, cell); j * cell <= fit.center.y() + b; ++j)
       cells += inside((i + 0.5) * cell, (j + 0.5) * cell) ? 1 : 0;
   return cells > 0 ? std::min(1.0, static_cast<double>(covered.size()) / cells) : 0.0;
 }
