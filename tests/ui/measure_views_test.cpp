@@ -275,6 +275,33 @@ class MapSectionsPanelTest : public QObject {
     QVERIFY(std::abs(chosen.at(0).at(0).toDouble() - 1.1) < 1e-9);
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel.grab().save(QString(dir) + "/rescan_list.png");
   }
+
+  void namesEachPlateAsTheMapJsonDoes() {
+    tunnelmap::StationMap m = profile_map();
+    tunnelmap::Diaphragm open, closed, end;
+    open.station_m = 0.6;
+    tunnelmap::Manhole hole;
+    hole.width_m = 0.45, hole.height_m = 0.70;
+    open.manhole = hole;
+    closed.station_m = 1.2, closed.closed = true;
+    end.station_m = 1.9, end.closed = true, end.kind = "end_wall";
+    m.girder.diaphragms = {open, closed, end};
+    tunnelmap::ui::MapSectionsPanel panel;
+    panel.resize(700, 500);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.set_map(m);
+    QTreeWidgetItem* plates = nullptr;
+    for (int i = 0; i < panel.tree()->topLevelItemCount(); ++i)
+      if (panel.tree()->topLevelItem(i)->text(0).startsWith("Diaphragms")) plates = panel.tree()->topLevelItem(i);
+    QVERIFY(plates);
+    QCOMPARE(plates->childCount(), 3);
+    QCOMPARE(plates->child(0)->text(1), QStringLiteral("manhole 0.450 × 0.700 m"));
+    QCOMPARE(plates->child(1)->text(1), QStringLiteral("closed: no opening"));
+    QCOMPARE(plates->child(2)->text(1), QStringLiteral("end wall"));
+    plates->setExpanded(true);
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel.grab().save(QString(dir) + "/plates_list.png");
+  }
 };
 
 class View3DMeasureTest : public QObject {
