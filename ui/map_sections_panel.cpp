@@ -70,13 +70,14 @@ MapSectionsPanel::MapSectionsPanel(QWidget* parent) : QWidget(parent) {
 
 void MapSectionsPanel::clear() {
   tree_->clear();
-  sections_ = out_of_tolerance_ = rescan_ = diaphragms_ = nullptr;
+  notes_ = sections_ = out_of_tolerance_ = rescan_ = diaphragms_ = nullptr;
   summary_->setText(tr("No map: Processing ▸ Map tunnel on a posed dataset lists its sections here."));
 }
 
-void MapSectionsPanel::set_map(const StationMap& map) {
+void MapSectionsPanel::set_map(const StationMap& map, const std::vector<std::string>& notes) {
   clear();
   if (!map.ok) return;
+  add_notes(notes);
   add_sections(map);
   add_out_of_tolerance(map);
   add_rescan(map);
@@ -90,6 +91,19 @@ void MapSectionsPanel::set_map(const StationMap& map) {
                            : tr("%1 section(s) over %2 stations; no design, so no tolerance check")
                                  .arg(map.sections.size())
                                  .arg(map.stations.size()));
+}
+
+// A note is a sentence, not a row of numbers: it spans the columns, whole in its tooltip.
+void MapSectionsPanel::add_notes(const std::vector<std::string>& notes) {
+  if (notes.empty()) return;
+  notes_ = group(tree_, tr("Notes (%1)").arg(notes.size()));
+  for (const std::string& note : notes) {
+    const QString text = QString::fromStdString(note);
+    auto* item = new QTreeWidgetItem(notes_, {text});
+    item->setFirstColumnSpanned(true);
+    item->setToolTip(kWhere, text);
+    item->setForeground(kWhere, Qt::darkRed);
+  }
 }
 
 void MapSectionsPanel::add_sections(const StationMap& map) {
@@ -171,6 +185,7 @@ void MapSectionsPanel::select_station(double station_m) {
 }
 
 int MapSectionsPanel::section_rows() const { return sections_ ? sections_->childCount() : 0; }
+int MapSectionsPanel::note_rows() const { return notes_ ? notes_->childCount() : 0; }
 int MapSectionsPanel::rescan_rows() const { return rescan_ ? rescan_->childCount() : 0; }
 int MapSectionsPanel::out_of_tolerance_rows() const { return out_of_tolerance_ ? out_of_tolerance_->childCount() : 0; }
 

@@ -200,8 +200,10 @@ void ReviewController::finish_map_tunnel(const std::shared_ptr<const FrameSource
   profile_->set_map(m);
   profile_dock_->show();
   profile_dock_->raise();
-  sections_->set_map(m);
+  const std::vector<std::string> notes = result.notes.all();
+  sections_->set_map(m, notes);
   sections_dock_->show();
+  if (!notes.empty()) sections_dock_->raise();  // what the map cannot show, before the profile
   ctx_.status->set_text(tr("Tunnel mapped from %1 of %2 frame(s): %3 stations over %4 m, %5 section(s), "
                            "%6 out of tolerance")
                             .arg(m.frames_used)
@@ -209,7 +211,8 @@ void ReviewController::finish_map_tunnel(const std::shared_ptr<const FrameSource
                             .arg(m.stations.size())
                             .arg(m.sections.back().to_m - m.sections.front().from_m, 0, 'f', 2)
                             .arg(m.sections.size())
-                            .arg(m.out_of_tolerance().size()));
+                            .arg(m.out_of_tolerance().size()) +
+                        (notes.empty() ? QString() : tr("; %n note(s) in Sections", nullptr, static_cast<int>(notes.size()))));
   emit tunnelMapped(true);
 }
 

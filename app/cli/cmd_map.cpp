@@ -22,7 +22,6 @@
 #include "core/kinematics/frame_pose.h"
 #include "core/kinematics/robot_json.h"
 #include "core/mapping/dataset_mapping.h"
-#include "core/mapping/gravity_agreement.h"
 #include "core/mapping/slam_options.h"
 #include "core/mapping/rescan_stretches.h"
 #include "core/mapping/station_map_builder.h"
@@ -108,21 +107,8 @@ void print_rescan(const StationMap& m) {
     if (r.joint_inside) std::printf("rescan %.2f to %.2f m: %s\n", r.from_m, r.to_m, r.reason.c_str());
 }
 
-// Pose groups that share no wall or plate with any other pose while others do: nothing checks
-// them (a pose off by metres maps its view where it claims, as a stretch no one else saw).
-void print_untied_poses(const PoseRefinement& refinement) {
-  if (!refinement.ran) return;
-  const bool any_tied = std::any_of(refinement.groups.begin(), refinement.groups.end(),
-                                    [](const PoseCorrection& c) { return !c.constrained.empty(); });
-  if (!any_tied) return;
-  for (const PoseCorrection& c : refinement.groups)
-    if (c.constrained.empty() && !c.frames.empty())
-      std::printf("pose %d (frames %d-%d): nothing it saw was seen from another pose, so nothing checks it; "
-                  "mapped where its pose puts it\n", c.group, c.frames.front(), c.frames.back());
-}
-
-void print_summary(const StationMap& m, const PoseRefinement& refinement, double detect_ms,
-                   double map_ms, int frames) {
+void print_summary(const StationMap& m, const PoseRefinement& refinement, const MappingNotes& notes,
+                   double detect_ms, double map_ms, int frames) {
   std::printf("map: %zu stations of %.2f m over %.2f m, %zu section(s), %d of %d frames used\n",
               m.stations.size(), m.options.station_step_m,
               m.sections.empty() ? 0.0 : m.sections.back().to_m - m.sections.front().from_m,
@@ -142,7 +128,7 @@ void print_summary(const StationMap& m, const PoseRefinement& refinement, double
       std::printf("pose %d (frames %d-%d): %s\n", p.group, p.frames.front(), p.frames.back(),
                   p.message.c_str());
   print_rescan(m);
-  print_untied_poses(refinement);
+  for (const std::string& line : notes.unchecked_poses) std::printf("%s\n", line.c_str());
   if (refinement.ran && refinement.given_poses_kept) {
     std::printf("poses kept as given: the structure agrees with them within its noise (chi-square gain %.1f, "
                 "threshold %.1f)\n", refinement.evidence.chi2_gain, refinement.evidence.threshold);
@@ -194,18 +180,15 @@ void run(const MapOptions& o, CliContext& ctx) {
   }
 
   const nlohmann::json pj = params.to_json();
-  if (!o.quiet) print_summary(m, mapped.refinement, dm.detect_ms, dm.map_ms, n);
-  if (mapped.refinement.ran) {
-    const std::string note = gravity_noise_note(gravity_agreement(mapped.poses, dataset_gravity(ds), ds.up),
-                                                params.get(slam_keys::gravity_deg));
-    if (!note.empty()) std::fprintf(stderr, "tunnelmap-cli: note: %s\n", note.c_str());
-  }
+  if (!o.quiet) print_summary(m, mapped.refinement, dm.notes, dm.detect_ms, dm.map_ms, n);
+  if (!dm.notes.gravity.empty()) std::fprintf(stderr, "tunnelmap-cli: note: %s\n", dm.notes.gravity.c_str());
   if (!m.ok && (!o.ply_path.empty() || !o.report_path.empty()))
     throw InputError(o.in.input, "no map to write: " + m.reason);
   if (!o.json_path.empty())
     write_file_atomically(o.json_path, [&](std::ostream& out) {
       nlohmann::json doc = station_map_document(m, pj, frames, o.in.input);
       add_refinement(doc, mapped.refinement);
+      doc["notes"] = dm.notes.all();
       out << doc.dump(2) << "\n";
     });
   if (!o.csv_path.empty())

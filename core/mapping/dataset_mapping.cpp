@@ -5,6 +5,7 @@
 #include "core/engine/run_engine.h"
 #include "core/kinematics/frame_pose.h"
 #include "core/mapping/frame_walls.h"
+#include "core/mapping/slam_options.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -65,7 +66,9 @@ DatasetMapping map_dataset(const Dataset& ds, Pipeline& pipeline, bool refine_po
     return !out.cancelled;
   });
   if (out.cancelled) return out;
-  out.mapped = map_posed_sequence(out.maps, walls, poses, ds.up, pipeline.params(), refine_poses, dataset_gravity(ds));
+  const std::vector<std::optional<Eigen::Vector3d>> gravity = dataset_gravity(ds);
+  out.mapped = map_posed_sequence(out.maps, walls, poses, ds.up, pipeline.params(), refine_poses, gravity);
+  out.notes = mapping_notes(out.mapped, gravity, ds.up, pipeline.params().get(slam_keys::gravity_deg));
   out.map_ms = out.mapped.map_ms + extract_ms;
   out.mapped.stations.timings_ms["map"] = out.map_ms;
   return out;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/io/dataset.h"
+#include "core/mapping/mapping_notes.h"
 #include "core/mapping/posed_sequence.h"
 #include "core/pipeline/pipeline.h"
 
@@ -18,6 +19,7 @@ struct DatasetMapping {
   std::vector<std::size_t> plane_counts;
   std::vector<StageTimings> timings;     // per frame, the pipeline's stage times
   MappedSequence mapped;
+  MappingNotes notes;                    // what the user should be told about `mapped`
   double detect_ms = 0.0;                // all frames' pipeline totals
   double map_ms = 0.0;                   // everything beyond detection (wall samples, refinement, map)
   bool cancelled = false;                // `progress` asked to stop: no map was built

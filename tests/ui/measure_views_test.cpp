@@ -37,6 +37,8 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QDir>
+#include <nlohmann/json.hpp>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkRenderWindow.h>
@@ -602,6 +604,68 @@ class MapReviewTest : public QObject {
     const QString err = QString::fromUtf8(bad.readAllStandardError());
     QVERIFY2(err.contains("000000.png") && err.contains("needs a posed dataset"), qPrintable(err));
     QVERIFY(!QFile::exists(dir_.filePath("no.png")));
+  }
+
+  // A stop reported 10 m from where it stood is mapped where its pose puts it; the Sections panel
+  // says so in the words `map` prints and writes to its JSON's "notes".
+  void aPoseNothingChecksIsNotedInTheSectionsPanelAsTheCommandLineNotesIt() {
+    const QString moved = dir_.filePath("moved");
+    QVERIFY(QDir().mkpath(moved));
+    for (const QFileInfo& entry : QDir(walk_).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+      QVERIFY(QDir().mkpath(moved + "/" + entry.fileName()));
+      for (const QString& file : QDir(entry.filePath()).entryList(QDir::Files))
+        QVERIFY(QFile::copy(entry.filePath() + "/" + file, moved + "/" + entry.fileName() + "/" + file));
+    }
+    QFile in(walk_ + "/dataset.json");
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    nlohmann::json d = nlohmann::json::parse(in.readAll().toStdString());
+    for (nlohmann::json& f : d["frames"])
+      if (f["pose_group"] == 3) f["pose"][3] = f["pose"][3].get<double>() + 10.0;
+    QFile out(moved + "/dataset.json");
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(QByteArray::fromStdString(d.dump()));
+    out.close();
+
+    tunnelmap::ui::MainWindow w;
+    w.suppress_dialogs = true;
+    w.resize(1400, 900);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QSignalSpy shown(&w, &tunnelmap::ui::MainWindow::frameShown);
+    QVERIFY(w.open_input(moved));
+    QVERIFY(shown.wait(30000));
+    QSignalSpy mapped(&w, &tunnelmap::ui::MainWindow::tunnelMapped);
+    w.map_tunnel();
+    QVERIFY(mapped.wait(120000));
+    QCOMPARE(mapped.at(0).at(0).toBool(), true);
+    QVERIFY2(w.status_text().endsWith("; 1 note(s) in Sections"), qPrintable(w.status_text()));
+
+    QProcess cli;
+    cli.start(TUNNELMAP_CLI_PATH, {"map", moved, "--quiet", "--json", dir_.filePath("moved.json")});
+    QVERIFY(cli.waitForFinished(120000));
+    QCOMPARE(cli.exitCode(), 0);
+    QFile json(dir_.filePath("moved.json"));
+    QVERIFY(json.open(QIODevice::ReadOnly));
+    const nlohmann::json notes = nlohmann::json::parse(json.readAll().toStdString())["notes"];
+    QCOMPARE(notes.size(), std::size_t{1});
+    QVERIFY(notes[0].get<std::string>().rfind("pose 3 (frames 6-7): nothing it saw", 0) == 0);
+
+    auto* panel = w.map_sections();
+    QCOMPARE(panel->note_rows(), 1);
+    QTreeWidgetItem* group = panel->tree()->topLevelItem(0);
+    QVERIFY2(group->text(0).startsWith("Notes (1)"), qPrintable(group->text(0)));
+    QCOMPARE(group->child(0)->text(0), QString::fromStdString(notes[0].get<std::string>()));
+    QVERIFY(panel->isVisible());  // raised over the profile: the map cannot show what the note says
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/notes_window.png");
+
+    // The walk as simulated has nothing to note.
+    QVERIFY(w.open_input(walk_));
+    QVERIFY(shown.wait(30000));
+    w.map_tunnel();
+    QVERIFY(mapped.wait(120000));
+    QCOMPARE(mapped.at(1).at(0).toBool(), true);
+    QCOMPARE(panel->note_rows(), 0);
+    QVERIFY(!panel->tree()->topLevelItem(0)->text(0).startsWith("Notes"));
   }
 
   // Map tunnel shows its progress and says how many frames it used; Cancel keeps the previous
