@@ -37,7 +37,7 @@ bool ReviewController::export_diaphragms_csv(const QString& path) {
 
 bool ReviewController::export_report(const QString& path) {
   return write_map_export(path, [&](const MappedTunnel& m) {
-    write_map_report(path.toStdString(), ctx_.input_path.toStdString(), *m.map, m.params);
+    write_map_report(path.toStdString(), ctx_.input_path.toStdString(), *m.map, m.params, m.notes);
   });
 }
 

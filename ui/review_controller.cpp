@@ -29,6 +29,7 @@ struct ReviewMap {
   std::shared_ptr<const FrameSource> source;  // the input the map was built from
   std::vector<Eigen::Isometry3d> poses;       // per frame, as the map used them
   std::vector<bool> detected;
+  std::vector<std::string> notes;             // the mapping's (MappingNotes::all())
   std::optional<double> pending_ahead;        // cut here once the chosen frame is shown
   int pending_frame = -1;                     // ... that frame
   nlohmann::json params;                      // the parameters the map was made with
@@ -201,6 +202,7 @@ void ReviewController::finish_map_tunnel(const std::shared_ptr<const FrameSource
   profile_dock_->show();
   profile_dock_->raise();
   const std::vector<std::string> notes = result.notes.all();
+  review_map_->notes = notes;
   sections_->set_map(m, notes);
   sections_dock_->show();
   if (!notes.empty()) sections_dock_->raise();  // what the map cannot show, before the profile
@@ -218,7 +220,7 @@ void ReviewController::finish_map_tunnel(const std::shared_ptr<const FrameSource
 
 std::optional<ReviewController::MappedTunnel> ReviewController::mapped_tunnel() const {
   if (!ctx_.source || review_map_->source != ctx_.source || profile_->map().stations.empty()) return std::nullopt;
-  return MappedTunnel{&profile_->map(), review_map_->params};
+  return MappedTunnel{&profile_->map(), review_map_->params, review_map_->notes};
 }
 
 bool ReviewController::show_station(double station_m) {

@@ -53,6 +53,7 @@ class ReviewController : public QObject {
   struct MappedTunnel {
     const StationMap* map;
     nlohmann::json params;
+    std::vector<std::string> notes;  // the mapping's, as `map` prints them
   };
   std::optional<MappedTunnel> mapped_tunnel() const;
   // After Map tunnel, as `map --ply`, `--csv`, `--diaphragms-csv` and `--report` write them;

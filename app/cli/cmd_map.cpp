@@ -197,7 +197,7 @@ void run(const MapOptions& o, CliContext& ctx) {
     write_file_atomically(o.diaphragms_csv_path, [&](std::ostream& out) { out << diaphragms_csv(m.girder); });
   if (!o.ply_path.empty()) write_sectioned_map_ply(o.ply_path, m.section_maps, pj, plate_outlines(m));
 #ifdef TUNNELMAP_HAVE_REPORT
-  if (!o.report_path.empty()) write_map_report(o.report_path, o.in.input, m, pj, o.ply_path);
+  if (!o.report_path.empty()) write_map_report(o.report_path, o.in.input, m, pj, dm.notes.all(), o.ply_path);
 #endif
   ctx.exit_code = 0;
 }

@@ -240,6 +240,95 @@ TEST(InspectionReport, SaysNoneWhenNothingIsOutOfToleranceOrToRescanAndWhyThereI
   EXPECT_NE(text.find("tunnelmap-render was not found next to tunnelmap-cli"), std::string::npos);
 }
 
+TEST(InspectionReport, CarriesTheMappingsNotesAsTheCommandLinePrintsThem) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_notes");
+  const StationMap map = test::make_report_station_map();
+  InspectionReportInput in = report_input(map, "");
+  const std::string unchecked = "pose 3 (frames 6-7): nothing it saw was seen from another pose, so nothing checks it";
+  in.notes = {unchecked + "; mapped where its pose puts it"};
+  write_inspection_report(dir + "/notes.pdf", in);
+  const std::string text = pdf_text(dir + "/notes.pdf", 1, 1);
+  EXPECT_NE(text.find("Notes"), std::string::npos);
+  EXPECT_NE(text.find(unchecked), std::string::npos) << text;  // on one line
+  expect_words_inside_margins(dir + "/notes.pdf");
+  // Nothing to note: no heading.
+  write_inspection_report(dir + "/plain.pdf", report_input(map, ""));
+  EXPECT_EQ(pdf_text(dir + "/plain.pdf").find("Notes"), std::string::npos);
+}
+
+// The box around a section's label in the plan: the words on the line from "S<n>" on, in pixels
+// of the page rendered at `dpi`, and the page it is on (0 when not found).
+struct LabelBox {
+  int page = 0;
+  QRectF box;
+};
+
+LabelBox plan_label_box(const std::string& pdf, const std::string& name, double dpi) {
+  const std::regex word(R"re(<word xMin="([-0-9.]+)" yMin="([-0-9.]+)" xMax="([-0-9.]+)" yMax="([-0-9.]+)">([^<]*)</word>)re");
+  for (int page = 1; page <= pdf_pages(pdf); ++page) {
+    const std::string html = pdf + ".p" + std::to_string(page) + ".html";
+    const std::string cmd = "pdftotext -bbox -f " + std::to_string(page) + " -l " + std::to_string(page) + " '" + pdf + "' '" + html + "'";
+    EXPECT_EQ(std::system(cmd.c_str()), 0);
+    const std::string text = read_file(html);
+    LabelBox found;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
+      const QRectF w(QPointF(std::stod((*it)[1]), std::stod((*it)[2])), QPointF(std::stod((*it)[3]), std::stod((*it)[4])));
+      if (found.page == 0 && (*it)[5] == name) found = {page, w};
+      else if (found.page != 0 && std::abs(w.top() - found.box.top()) < 0.5 && w.left() > found.box.left())
+        found.box = found.box.united(w);
+    }
+    if (found.page != 0) {
+      const double k = dpi / 72.0;
+      found.box = QRectF(found.box.topLeft() * k, found.box.bottomRight() * k);
+      return found;
+    }
+  }
+  return {};
+}
+
+TEST(InspectionReport, APlatesLineInThePlanDoesNotRunThroughTheSectionsLabel) {
+  // A plate without an opening (a whole line across the band) in the middle of each section,
+  // where the section's name and size are centred.
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_plan_label");
+  StationMap map = test::make_report_station_map();
+  for (const Section& s : map.sections) {
+    Diaphragm d;
+    d.station_m = 0.5 * (s.from_m + s.to_m);
+    d.closed = true;
+    map.girder.diaphragms.push_back(d);
+  }
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, ""));
+  const double dpi = 144.0;
+  const LabelBox label = plan_label_box(pdf, "S2", dpi);
+  ASSERT_GT(label.page, 0);
+  EXPECT_GT(label.box.width(), 3.0 * label.box.height());  // the name and its size
+  const std::string page = std::to_string(label.page);
+  ASSERT_EQ(std::system(("pdftoppm -r 144 -png -f " + page + " -l " + page + " -singlefile '" + pdf + "' '" + dir + "/plan'").c_str()), 0);
+  QImage img(QString::fromStdString(dir + "/plan.png"));
+  ASSERT_FALSE(img.isNull());
+  // The plate's line (grey 120, 128, 140) runs down the band below the label; inside the label's
+  // box the same columns hold the section's shade and the text, not the line (the text's
+  // antialiased edges may share the grey, a few pixels).
+  const auto plate_grey = [&](int x, int y) {
+    const QColor c = img.pixelColor(x, y);
+    return std::abs(c.red() - 120) < 12 && std::abs(c.green() - 128) < 12 && std::abs(c.blue() - 140) < 12;
+  };
+  const QRect box = label.box.toAlignedRect();
+  int line_columns = 0;
+  for (int x = box.left(); x <= box.right(); ++x) {
+    int below = 0, inside = 0;
+    for (int y = box.bottom() + 3; y <= box.bottom() + 12; ++y) below += plate_grey(x, y) ? 1 : 0;
+    if (below < 9) continue;
+    ++line_columns;
+    for (int y = box.top() + 1; y < box.bottom(); ++y) inside += plate_grey(x, y) ? 1 : 0;
+    EXPECT_LT(inside, (box.height() - 2) / 3) << "the plate's line runs through the label at x = " << x;
+  }
+  EXPECT_GE(line_columns, 1);  // the plate does pass under the label
+}
+
 TEST(InspectionReport, WithoutDesignSaysNone) {
   REQUIRE_POPPLER();
   const std::string dir = fresh_dir("tunnelmap_report_nodesign");

@@ -36,6 +36,7 @@ void build(report::Document& doc, const InspectionReportInput& in) {
   const StationMap& m = *in.map;
   add_title_and_inputs(doc, in);
   add_summary(doc, m);
+  add_notes(doc, in.notes);
   add_parameters(doc, in.params);
   if (m.stations.empty() && m.sections.empty()) {
     doc.add_heading(QStringLiteral("Plan and profiles"));

@@ -25,8 +25,10 @@ std::string now_text() {
 }  // namespace
 
 void write_map_report(const std::string& pdf_path, const std::string& input, const StationMap& map,
-                      const nlohmann::json& params, const std::string& map_ply) {
+                      const nlohmann::json& params, const std::vector<std::string>& notes,
+                      const std::string& map_ply) {
   InspectionReportInput in;
+  in.notes = notes;
   in.input = input;
   in.created = now_text();
   in.params = params;

@@ -111,6 +111,12 @@ void add_summary(Document& doc, const StationMap& m) {
   doc.add_key_values(rows, 32.0);
 }
 
+void add_notes(Document& doc, const std::vector<std::string>& notes) {
+  if (notes.empty()) return;
+  doc.add_heading(QStringLiteral("Notes"));
+  for (const std::string& note : notes) doc.add_paragraph(q(note), doc.font(9.0), colours::kText);
+}
+
 void add_parameters(Document& doc, const nlohmann::json& params) {
   doc.add_heading(QStringLiteral("Parameters"));
   std::vector<std::pair<QString, QString>> kv;

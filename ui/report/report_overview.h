@@ -8,6 +8,8 @@ namespace tunnelmap::report {
 
 void add_title_and_inputs(Document& doc, const InspectionReportInput& in);
 void add_summary(Document& doc, const StationMap& map);
+// The mapping's notes, a paragraph each, under their own heading; nothing when there are none.
+void add_notes(Document& doc, const std::vector<std::string>& notes);
 // All parameters as key = value pairs in two column pairs, small print.
 void add_parameters(Document& doc, const nlohmann::json& params);
 

@@ -4,6 +4,7 @@
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "ui/report/report_axis.h"
 #include "ui/report/report_draw.h"
@@ -70,7 +71,14 @@ void add_plan(Document& doc, const StationMap& map) {
     const double half_step = 0.5 * m->options.station_step_m;
     p.setRenderHint(QPainter::Antialiasing, true);
 
-    // Sections, shaded alternately, named and sized in the upper half of the band.
+    // Sections, shaded alternately, named and sized in the upper half of the band (the names are
+    // drawn last, over the plates' lines, on their section's shade).
+    struct SectionLabel {
+      QRectF box;
+      QString text;
+      QColor fill;
+    };
+    std::vector<SectionLabel> labels;
     for (std::size_t i = 0; i < m->sections.size(); ++i) {
       const Section& s = m->sections[i];
       const QRectF r(QPointF(x.at(s.from_m), lateral(0.5 * s.width_m)), QPointF(x.at(s.to_m), lateral(-0.5 * s.width_m)));
@@ -78,15 +86,10 @@ void add_plan(Document& doc, const StationMap& map) {
       const QString name = QStringLiteral("S%1").arg(i + 1);
       const QString size = metres(s.width_m) + QStringLiteral(" \u00d7 ") + metres(s.height_m);
       const QRectF label_box(r.left(), r.top() + mm(0.8), r.width(), fm_label.height());
-      if (fm_label.horizontalAdvance(name + QStringLiteral("  ") + size) + mm(2) < r.width()) {
-        p.setFont(label_font);
-        p.setPen(colours::kText);
-        p.drawText(label_box, Qt::AlignCenter, name + QStringLiteral("  ") + size);
-      } else if (fm_label.horizontalAdvance(name) + mm(1) < r.width()) {
-        p.setFont(label_font);
-        p.setPen(colours::kText);
-        p.drawText(label_box, Qt::AlignCenter, name);
-      }
+      if (fm_label.horizontalAdvance(name + QStringLiteral("  ") + size) + mm(2) < r.width())
+        labels.push_back({label_box, name + QStringLiteral("  ") + size, kSectionFill[i % 2]});
+      else if (fm_label.horizontalAdvance(name) + mm(1) < r.width())
+        labels.push_back({label_box, name, kSectionFill[i % 2]});
     }
 
     // Centre line.
@@ -145,6 +148,16 @@ void add_plan(Document& doc, const StationMap& map) {
       const double gap_right = d.manhole->lateral_m - 0.5 * d.manhole->width_m;
       p.drawLine(QPointF(px, lateral(0.5 * width)), QPointF(px, lateral(std::min(gap_left, 0.5 * width))));
       p.drawLine(QPointF(px, lateral(std::max(gap_right, -0.5 * width))), QPointF(px, lateral(-0.5 * width)));
+    }
+
+    // The sections' names, each on its shade where a plate's line would cross the text.
+    p.setFont(label_font);
+    for (const SectionLabel& l : labels) {
+      const double w = fm_label.horizontalAdvance(l.text) + mm(1.2);
+      const QRectF behind(l.box.center().x() - 0.5 * w, l.box.top(), w, l.box.height());
+      p.fillRect(behind, l.fill);
+      p.setPen(colours::kText);
+      p.drawText(l.box, Qt::AlignCenter, l.text);
     }
 
     // Side names, left of the drawing.
