@@ -7,6 +7,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/mapping/end_wall_trim.h"
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/section_evidence.h"
 #include "core/mapping/station_sections.h"
@@ -555,6 +556,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
     if (!design || std::isnan(v)) return std::nullopt;
     return (v - *design) * 1000.0;
   };
+  std::vector<std::array<double, 4>> section_walls;  // per section: its walls' median positions
   for (const SectionRun& run : split.sections) {
     // Section: bounds at its stations' bin edges; frames that measured any of its stations.
     Section sec;
@@ -586,7 +588,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
     sec.joint_seen = run.unseen_joint_stations < 0;
     sec.joint_uncertainty_m = sec.joint_seen ? step : 0.5 * (run.unseen_joint_stations + 1) * step;
     out.sections.push_back(sec);
-    add_section_maps(line_, wall_pos, sec.from_m, sec.to_m, tunnel_.forbidden_band_m, out.section_maps);
+    section_walls.push_back({wall_pos[0], wall_pos[1], wall_pos[2], wall_pos[3]});
 
     for (int k = run.first; k <= run.last; ++k) {
       Station st;
@@ -624,6 +626,10 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   out.ok = true;
   out.status = "ok";
   out.girder = build_girder_structure(out, plates_);
+  if (trim_beyond_end_walls(out, section_walls)) out.girder = build_girder_structure(out, plates_);
+  for (std::size_t i = 0; i < out.sections.size(); ++i)
+    add_section_maps(line_, section_walls[i].data(), out.sections[i].from_m, out.sections[i].to_m,
+                     tunnel_.forbidden_band_m, out.section_maps);
   out.timings_ms["map"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return out;
