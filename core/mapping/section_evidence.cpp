@@ -19,10 +19,14 @@ struct Sides {
 
 using FrameSides = std::map<int, Sides>;
 
-FrameSides sides_by_frame(const SectionRun& a, const SectionRun& b, const std::vector<FrameStationSize>& views) {
+// `margin`: stations next to the joint left out on each side.
+FrameSides sides_by_frame(const SectionRun& a, const SectionRun& b, const std::vector<FrameStationSize>& views,
+                          int margin = 0) {
   FrameSides by_frame;
   for (const FrameStationSize& v : views) {
-    const int side = v.station >= a.first && v.station <= a.last ? 0 : v.station >= b.first && v.station <= b.last ? 1 : -1;
+    const bool before = v.station >= a.first && v.station <= a.last - margin;
+    const bool after = v.station >= b.first + margin && v.station <= b.last;
+    const int side = before ? 0 : after ? 1 : -1;
     if (side < 0) continue;
     Sides& s = by_frame[v.frame];
     s.w[side].push_back(v.width_m);
@@ -62,8 +66,12 @@ bool measured(const std::vector<double>& v) { return !std::isnan(median_of_measu
 // Pose groups whose frames each measure the stepping dimension on both sides and see no step
 // there. One view can be wrong where a step hides behind a plate (through the manhole, a wall
 // and the one past its joint, a few millimetres apart, make one plane), so a step is taken
-// back as it is confirmed: by `min_poses` pose groups.
-bool poses_see_it_stay(const SectionRun& a, const SectionRun& b, const FrameSides& frames, const JointEvidence& e) {
+// back as it is confirmed: by `min_poses` pose groups. The station next to the joint on each
+// side is left out: the joint lies on a station's edge only within the poses' error along the
+// girder, so a frame whose view of one size ends there may have put its last centimetres of
+// that size past the edge, and would "see it stay" where it saw only one side.
+bool poses_see_it_stay(const SectionRun& a, const SectionRun& b, const JointEvidence& e) {
+  const FrameSides frames = sides_by_frame(a, b, e.views, 1);
   const int dim = stepping_dimension(a, b);
   const double step = dim == 0 ? b.width_m - a.width_m : b.height_m - a.height_m;
   std::set<int> poses;
@@ -77,9 +85,8 @@ bool poses_see_it_stay(const SectionRun& a, const SectionRun& b, const FrameSide
 }
 
 // The stretch a plate hides: one within reach of it, unless two pose groups see the size stay.
-bool hidden_by_plate(const SectionRun& a, const SectionRun& b, const JointStretch& s, const FrameSides& frames,
-                     const JointEvidence& e) {
-  if (poses_see_it_stay(a, b, frames, e)) return false;
+bool hidden_by_plate(const SectionRun& a, const SectionRun& b, const JointStretch& s, const JointEvidence& e) {
+  if (poses_see_it_stay(a, b, e)) return false;
   return std::any_of(e.plate_stations.begin(), e.plate_stations.end(), [&](int p) {
     return p >= s.last_a - e.plate_reach && p <= s.first_b + e.plate_reach && p >= a.first && p < b.last;
   });
@@ -110,9 +117,9 @@ bool joint_confirmed(const SectionRun& a, const SectionRun& b, const FrameSides&
                      const JointEvidence& e) {
   const std::set<int> seeing = poses_seeing_step(a, b, frames, e);
   if (static_cast<int>(seeing.size()) >= e.min_poses) return true;
-  if (!seeing.empty() && each_side_measured(a, b, frames, e, seeing) && !poses_see_it_stay(a, b, frames, e))
+  if (!seeing.empty() && each_side_measured(a, b, frames, e, seeing) && !poses_see_it_stay(a, b, e))
     return true;
-  return hidden_by_plate(a, b, sized, frames, e) && each_side_measured(a, b, frames, e);
+  return hidden_by_plate(a, b, sized, e) && each_side_measured(a, b, frames, e);
 }
 
 SectionRun with_medians(int first, int last, const SectionSplit& split, const std::vector<double>& w,

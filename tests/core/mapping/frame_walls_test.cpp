@@ -1,4 +1,5 @@
-// A frame's samples when it found no cross-section of its own: the plate it faces, nothing else.
+// A frame's wall samples: the plate it faces when it found no cross-section of its own, and the
+// roof of the next section where the roof steps down ahead of it.
 #include "core/mapping/frame_walls.h"
 
 #include <gtest/gtest.h>
@@ -35,6 +36,32 @@ TEST(FrameWalls, AFrameWithoutACrossSectionGivesThePlatesItFaces) {
   EXPECT_GT(near_points, 100000);
   EXPECT_GT(far_points, 5000);
   EXPECT_TRUE(walls.rims.empty());  // rims are taken where the frame's cross-section places them
+}
+
+// Girder 14 of the family of seed 10 (0.92 m wide, drifted walk): the roof steps down by 33 mm
+// (1.419 to 1.386 m above the floor) at x = 18.604, 2 m past a plate. Frame 40 stands 0.7 m
+// before that plate and sees the lower roof through its manhole, 2.7-4 m ahead. It is the only
+// kind of frame that sees both roofs: past the plate, the floor is out of view for 1.3 m. The
+// lower roof lies 33 mm inside the higher one, deeper than any zone of a wall: unless the frame
+// splits its view into two cross-sections there, those samples are "inside", not the roof.
+TEST(FrameWalls, ARoofThatStepsDownThreeMetresAheadIsTheNextSectionsRoof) {
+  const testing::FamilyGirder girder(10, 14);
+  const double joint_x = 18.604, lower_roof_z = 1.3862;
+  const FrameResult r = girder.detect(40);
+  ASSERT_TRUE(r.map.detected) << r.map.reason;
+  FrameWalls walls;
+  extract_frame_walls(r, walls);
+  const Eigen::Isometry3d camera_to_world = girder.sim().pose(40);
+  ASSERT_NEAR(joint_x - camera_to_world.translation().x(), 2.63, 0.01);
+  long lower_roof = 0, off_roof = 0;
+  for (const WallSample& s : walls.samples) {
+    if (s.wall != static_cast<std::uint8_t>(WallClass::Top) || !s.on_surface) continue;
+    const Eigen::Vector3d p = camera_to_world * s.point.cast<double>();
+    if (p.x() < joint_x + 0.1) continue;
+    (std::abs(p.z() - lower_roof_z) < 0.01 ? lower_roof : off_roof) += s.points;
+  }
+  EXPECT_GT(lower_roof, 1000);
+  EXPECT_LT(off_roof, lower_roof / 20);
 }
 
 }  // namespace

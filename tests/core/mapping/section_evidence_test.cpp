@@ -256,6 +256,31 @@ TEST(SectionEvidence, OnePoseThatSeesTheStepWithTwoPosesOnEachSideIsAJoint) {
   EXPECT_EQ(keep_confirmed_joints(p.split, p.w, p.h, evidence(views, {0, 1, 2, 2, 3, 4, 5, 5})).sections.size(), 2u);
 }
 
+TEST(SectionEvidence, AViewWhoseFirstSizeEndsOneStationPastTheJointDoesNotTakeItBack) {
+  // One stop sees the step (frames 2, 3), two stops on each side measure their side. Frames of
+  // two more stops measure 0.80 m up to station 10, the first past the joint: the last
+  // centimetres of the narrow section, put past the station's edge by their poses' error along
+  // the girder. They saw one side only; the joint stays. Seen at 11 as well, the size stayed.
+  const Profile p;
+  std::vector<FrameStationSize> views;
+  add_frame(views, 0, 0, 9, 0.0);
+  add_frame(views, 1, 2, 9, 0.0);
+  add_frame(views, 2, 5, 15, 0.03);
+  add_frame(views, 3, 6, 15, 0.03);
+  add_frame(views, 4, 10, 19, 0.03);
+  add_frame(views, 5, 11, 19, 0.03);
+  std::vector<FrameStationSize> edge = views, beyond = views;
+  add_frame(edge, 6, 4, 10, 0.0);
+  add_frame(edge, 7, 3, 10, 0.0);
+  const std::vector<int> groups = {0, 1, 2, 2, 3, 4, 5, 6};
+  const SectionSplit kept = keep_confirmed_joints(p.split, p.w, p.h, evidence(edge, groups));
+  ASSERT_EQ(kept.sections.size(), 2u);
+  EXPECT_EQ(kept.sections[1].first, 10);
+  add_frame(beyond, 6, 4, 11, 0.0);
+  add_frame(beyond, 7, 3, 11, 0.0);
+  EXPECT_EQ(keep_confirmed_joints(p.split, p.w, p.h, evidence(beyond, groups)).sections.size(), 1u);
+}
+
 TEST(SectionEvidence, AStepSeenFromBothSidesButNotWhereItLiesGoesToTheMiddleOfTheGap) {
   // Two stops measure 0.80 m at stations 4-7 and 0.83 m at 12-15 in their own frames; nothing
   // measured 8-11. The step is real, its place anywhere from 8 to 12: the joint goes to 10,
