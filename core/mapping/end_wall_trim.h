@@ -11,8 +11,10 @@ namespace tunnelmap {
 
 // Drops the stations whose bin lies wholly beyond an end wall of `map.girder` (its first or last
 // plate of kind "end_wall") and ends the sections at the stations kept; a section wholly beyond
-// goes, with its entry of `section_walls` (one per section). Whether anything was dropped: the
-// girder's compartments and centreline are then to be found again.
+// goes, with its entry of `section_walls` (one per section; std::logic_error otherwise). The
+// sections' sizes and frame counts are left as they were (a corner's station or two among
+// many). Whether anything was dropped: the girder's compartments and centreline are then to be
+// found again.
 bool trim_beyond_end_walls(StationMap& map, std::vector<std::array<double, 4>>& section_walls);
 
 }  // namespace tunnelmap

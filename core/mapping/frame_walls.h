@@ -59,7 +59,8 @@ struct FrameWallsOptions {
   // depth steps do not decide a split). A joint 1.3-2.5 m past a plate is seen whole only from
   // before the plate, 2.5-4 m away (past it, a camera in the manhole sees no floor for ~1.3 m);
   // at 3 m such a roof step was never split off, and its lower roof, deeper than any zone,
-  // dropped as "inside". 4 m is also how deep the pose graph reads walls (slam.max_wall_depth_m).
+  // dropped as "inside". 4 m is also the default depth to which the pose graph reads walls
+  // (slam.max_wall_depth_m).
   double max_split_distance_m = 4.0;
   double zone_gap_m = 0.005;
   int min_zone_points = 60;   // per station, to see where the cross-section changes

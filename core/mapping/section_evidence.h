@@ -7,8 +7,9 @@
 // the step themselves (their own sizes on the two sides differ, in the direction of the
 // sections' step, by more than half of it), or where one pose group's frames see the step and
 // the frames of `min_poses` pose groups on each side measure their side's size (below) and the
-// frames of fewer than `min_poses` pose groups see the size stay across; otherwise the two
-// sections are one.
+// frames of fewer than `min_poses` pose groups see the size stay across (the station next to
+// the joint on each side left out: it lies on either side within the poses' error along the
+// girder); otherwise the two sections are one.
 //
 // A plate across the girder hides each side of it from the other, so a joint at a plate is
 // never seen whole by one frame. There the evidence is the frames' own sizes on each side: at

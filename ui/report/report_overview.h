@@ -1,6 +1,7 @@
 #pragma once
 // The first part of the report: title, what was inspected and how (input, date, tool version,
-// station step, design, tolerance), the summary of the map and the parameters used.
+// station step, design, tolerance), the summary of the map, the mapping's notes and the
+// parameters used.
 #include "ui/report/inspection_report.h"
 #include "ui/report/report_document.h"
 

@@ -39,12 +39,12 @@ TEST(FrameWalls, AFrameWithoutACrossSectionGivesThePlatesItFaces) {
 }
 
 // Girder 14 of the family of seed 10 (0.92 m wide, drifted walk): the roof steps down by 33 mm
-// (1.419 to 1.386 m above the floor) at x = 18.604, 2 m past a plate. Frame 40 stands 0.7 m
-// before that plate and sees the lower roof through its manhole, 2.7-4 m ahead. It is the only
+// (1.419 to 1.386 m above the floor) at x = 18.604, 2 m past a plate. Frame 40 stands 0.6 m
+// before that plate and sees the lower roof through its manhole, 2.6-4 m ahead. It is the only
 // kind of frame that sees both roofs: past the plate, the floor is out of view for 1.3 m. The
 // lower roof lies 33 mm inside the higher one, deeper than any zone of a wall: unless the frame
 // splits its view into two cross-sections there, those samples are "inside", not the roof.
-TEST(FrameWalls, ARoofThatStepsDownThreeMetresAheadIsTheNextSectionsRoof) {
+TEST(FrameWalls, ARoofThatStepsDownNearlyThreeMetresAheadIsTheNextSectionsRoof) {
   const testing::FamilyGirder girder(10, 14);
   const double joint_x = 18.604, lower_roof_z = 1.3862;
   const FrameResult r = girder.detect(40);
