@@ -165,8 +165,7 @@ void extract_frame_walls(const FrameResult& r, FrameWalls& out, const FrameWalls
         out.samples.push_back(s);
       }
     }
-  if (plates_only) return;
-  local_insets(m, o, out.samples);
+  if (!plates_only) local_insets(m, o, out.samples);
   std::vector<int> plates;
   for (const auto& [id, k] : kind)
     if (k.wall == kTransverseSample) plates.push_back(id);

@@ -83,7 +83,8 @@ struct FrameWallsOptions {
 // frame that found no cross-section gives its planes across its map's rough axis (the camera's
 // forward direction levelled by the up it was given, or the walls' fitted axis) alone: too near
 // a plate to see the walls beside it, it still sees the plate, which tells where it stands
-// along the girder (whoever uses them checks them against the girder's axis).
+// along the girder (whoever uses them checks them against the girder's axis), and the rims of
+// the openings in them (often the only view of a plate just behind another, through its manhole).
 void extract_frame_walls(const FrameResult& r, FrameWalls& out,
                          const FrameWallsOptions& options = FrameWallsOptions());
 

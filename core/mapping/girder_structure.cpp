@@ -439,4 +439,9 @@ GirderStructure build_girder_structure(const StationMap& map, const std::vector<
   return g;
 }
 
+bool view_lies_across_axis(const PlateView& view, double max_angle_deg) {
+  if (view.samples.size() < 3) return false;
+  return plate_normal({&view}).x() > std::cos(max_angle_deg * M_PI / 180.0);
+}
+
 }  // namespace tunnelmap

@@ -86,6 +86,11 @@ struct GirderStructure {
   std::vector<CentrelinePoint> centreline;
 };
 
+// Whether one view's samples lie on a plane within `max_angle_deg` of square to the map's axis
+// (their least spread direction within that angle of the station direction); false for fewer
+// than three samples.
+bool view_lies_across_axis(const PlateView& view, double max_angle_deg);
+
 // The stations of the plates across the girder that frames saw (views grouped along the axis,
 // each group at least `min_plate_area_m2`), ascending: what a section's joint may hide behind,
 // known before the sections are.

@@ -30,7 +30,7 @@ std::string gravity_noise_note(const GravityAgreement& agreement, double gravity
   char text[360];
   std::snprintf(text, sizeof text,
                 "the frames' gravity lies %.2f deg per tilt axis (RMS over %d frames) from the mapped poses' down, "
-                "more than 3 x slam.gravity_deg = %g: if the IMU is that noisy, --set slam.gravity_deg=%.2g "
+                "more than 3 x slam.gravity_deg = %g: if the IMU is that noisy, slam.gravity_deg set to %.2g "
                 "weighs it as it is",
                 *per_axis, agreement.frames, gravity_deg, *per_axis);
   return text;

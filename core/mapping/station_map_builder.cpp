@@ -358,7 +358,7 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
 void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isometry3d& T) {
   const auto t0 = std::chrono::steady_clock::now();
   FrameWalls walls;
-  if (r.map.detected) extract_frame_walls(r, walls);  // the map takes detected frames only
+  extract_frame_walls(r, walls);  // a frame with no cross-section still gives the plates it faces
   const double extract_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   add_frame(index, r.map, walls, T);
@@ -368,7 +368,13 @@ void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isomet
 void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& walls,
                                   const Eigen::Isometry3d& T) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (ensure_frame(map, T) && map.detected) {
+  const bool placed = ensure_frame(map, T);
+  if (placed && !map.detected) {
+    // It found no cross-section (a plate fills its view, the walls beside it too short for a
+    // zone), yet its pose places the plates it faces as well as any frame's: often the only view
+    // of a plate just behind another, through that one's opening.
+    add_plate_views(index, walls, T, PlateCheck::AcrossMapAxis);
+  } else if (placed) {
     Pieces own;
     frame_pieces(map, walls, T, index, own);
     apply_context(map, own, T);
@@ -377,7 +383,7 @@ void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& w
         std::vector<Piece>& dst = pieces_[k];
         dst.insert(dst.end(), v.begin(), v.end());
       }
-      add_plate_views(index, walls, T);
+      add_plate_views(index, walls, T, PlateCheck::AcrossOwnAxis);
       record_frame_dims(index, own);
     }
   }
@@ -437,8 +443,8 @@ StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
   return d;
 }
 
-void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls,
-                                        const Eigen::Isometry3d& T) {
+void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T,
+                                        PlateCheck check) {
   const int camera_node = line_.locate(T.translation()).node;
   const auto map_coordinates = [&](const Eigen::Vector3f& camera_point) {
     const LinePosition at = line_.locate(T * camera_point.cast<double>(), camera_node);
@@ -455,7 +461,9 @@ void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls,
   for (const RimPoint& r : walls.rims)
     if (const auto it = by_plane.find(r.plane); it != by_plane.end())
       it->second.rim.push_back(map_coordinates(r.point));
-  for (auto& [plane, v] : by_plane) plates_.push_back(std::move(v));
+  for (auto& [plane, v] : by_plane)
+    if (check == PlateCheck::AcrossOwnAxis || view_lies_across_axis(v, kTransverseMaxAngleDeg))
+      plates_.push_back(std::move(v));
 }
 
 namespace {

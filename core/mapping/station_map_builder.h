@@ -32,7 +32,7 @@ class StationMapBuilder {
   // the plane labels it came from, and its camera-to-world pose. Updates `result.map`: missing
   // walls inferred from the map so far (else the design), and "inconsistent_with_context" when
   // the frame disagrees with several frames before it at the stations it sees. Accepted frames
-  // add their wall points to the map.
+  // add their wall points to the map; frames that found no cross-section, the plates they face.
   void add_frame(int index, FrameResult& result, const Eigen::Isometry3d& camera_to_world);
   // The same from the frame's compact wall samples (extract_frame_walls of its result), for
   // frames whose images are no longer at hand (rebuilding the map under refined poses).
@@ -117,11 +117,14 @@ class StationMapBuilder {
   // Every accepted frame's own sizes, stations counted from `first_station`.
   std::vector<FrameStationSize> frame_views(int first_station) const;
 
-  // The plates across the axis in an accepted frame's samples, in map coordinates.
-  void add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T);
+  // The plates across the axis in a frame's samples, in map coordinates. A detected frame's
+  // samples lie across its own axis; a frame without a cross-section has no axis to trust, so
+  // each view must also lie across the map's.
+  enum class PlateCheck { AcrossOwnAxis, AcrossMapAxis };
+  void add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T, PlateCheck check);
 
   Pieces pieces_;                 // accepted frames' pieces
-  std::vector<PlateView> plates_; // accepted frames' views of plates across the axis
+  std::vector<PlateView> plates_; // views of plates across the axis (accepted and undetected frames)
   std::map<int, std::vector<FrameDims>> frame_dims_;  // by station, accepted frames
   std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
   double last_frame_ms_ = 0.0;

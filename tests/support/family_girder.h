@@ -14,6 +14,7 @@ class FamilyGirder {
   FamilyGirder(unsigned seed, int index);
 
   const SimConfig& config() const { return config_; }
+  const Parameters& params() const { return params_; }  // the box-girder preset
   const TunnelSimulator& sim() const { return sim_; }
   // Frame `frame` detected; `rendered` (when given) receives the simulator's frame.
   FrameResult detect(int frame, SimFrame* rendered = nullptr) const;

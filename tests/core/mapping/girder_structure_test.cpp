@@ -252,6 +252,22 @@ TEST(GirderPlates, PlatesTwentyCentimetresApartAreTwoWhoeverSawThem) {
   EXPECT_NEAR(g.diaphragms[1].station_m, 5.0, 1e-9);
 }
 
+TEST(GirderPlates, AViewLiesAcrossTheAxisWithinItsAngle) {
+  const auto everywhere = [](double, double) { return true; };
+  EXPECT_TRUE(view_lies_across_axis(face_view(0, 3.0, everywhere), 20.0));
+  // The same face turned 30 degrees about the vertical (its station grows with lateral).
+  PlateView turned = face_view(0, 3.0, everywhere);
+  for (Eigen::Vector3d& p : turned.samples) p.x() += std::tan(30.0 * M_PI / 180.0) * p.y();
+  EXPECT_FALSE(view_lies_across_axis(turned, 20.0));
+  EXPECT_TRUE(view_lies_across_axis(turned, 35.0));
+  // A strip of wall along the girder.
+  PlateView wall;
+  for (double s = 2.0; s <= 3.0; s += 0.025)
+    for (double z = -0.5; z <= 0.5; z += 0.025) wall.samples.push_back({s, 0.45, z}), wall.weights.push_back(64);
+  EXPECT_FALSE(view_lies_across_axis(wall, 20.0));
+  EXPECT_FALSE(view_lies_across_axis(PlateView{}, 20.0));
+}
+
 TEST(GirderPlates, AFaceInsideTheSectionMustStillBeAsLargeAsAPlate) {
   // A 0.25 x 0.25 m face in the middle of the passage (a bracket, a stiffener's end): 0.06 m2.
   const StationMap map = two_section_map();

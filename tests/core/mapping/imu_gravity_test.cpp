@@ -90,6 +90,9 @@ TEST(ImuGravity, AnImuNoisierThanTheEstimateWeighsItIsToldWithItsNoise) {
   EXPECT_LT(*noisy.per_axis_deg(), 1.5);
   const std::string note = gravity_noise_note(noisy, 0.1);
   EXPECT_NE(note.find("more than 3 x slam.gravity_deg = 0.1"), std::string::npos) << note;
+  // The CLI, the GUI and the report show the same line: it names the parameter, not a flag.
+  EXPECT_NE(note.find("slam.gravity_deg set to"), std::string::npos) << note;
+  EXPECT_EQ(note.find("--set"), std::string::npos) << note;
   EXPECT_TRUE(gravity_noise_note(noisy, 1.0).empty());  // weighed as it is
 
   // At 0.1 degrees, as the estimate weighs it: nothing to tell.

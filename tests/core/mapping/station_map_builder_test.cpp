@@ -1,0 +1,52 @@
+// The plates a posed walk maps include those seen only by frames that found no cross-section of
+// their own: a plate just behind another, seen through that one's manhole.
+#include "core/mapping/station_map_builder.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/mapping/posed_sequence.h"
+#include "tests/support/family_girder.h"
+
+namespace tunnelmap {
+namespace {
+
+// Girder 17 of the evaluation's family of seed 10 (field box girder, 1.01 x 1.21 m, elliptic
+// 0.41 x 0.62 m manholes): the preset's manhole plate stands at x = 5.00 m, 0.32 m behind the
+// diaphragm at 4.68 m, its opening in line with the diaphragm's. Frames 10 and 11, 0.8 m before
+// the diaphragm, see it as a ring through the diaphragm's manhole; the diaphragm fills their
+// view, so they find no cross-section. Frames 12 and 13, 0.13 m before the diaphragm, see the
+// plate only in their corners at 0.45 m, too little for a face. Frames 6-15, exact poses.
+TEST(StationMapPlates, APlateOnlyFramesWithoutACrossSectionSawIsMappedWithItsManhole) {
+  const testing::FamilyGirder girder(10, 17);
+  const double diaphragm_x = 4.6777, plate_x = 5.0, manhole_w = 0.4118, manhole_h = 0.6230;
+  std::vector<TunnelMap> maps;
+  std::vector<FrameWalls> walls;
+  std::vector<Eigen::Isometry3d> poses;
+  for (int f = 6; f <= 15; ++f) {
+    const FrameResult r = girder.detect(f);
+    if (f == 10 || f == 11) ASSERT_FALSE(r.map.detected) << "frame " << f;
+    maps.push_back(r.map);
+    walls.emplace_back();
+    extract_frame_walls(r, walls.back());
+    poses.push_back(girder.sim().pose(f));
+  }
+  const MappedSequence mapped =
+      map_posed_sequence(maps, walls, poses, Eigen::Vector3d::UnitZ(), girder.params(), /*refine=*/false);
+  const StationMap& map = mapped.stations;
+  const auto world_x = [&](const Diaphragm& d) { return d.point.x(); };
+  std::vector<const Diaphragm*> near;
+  for (const Diaphragm& d : map.girder.diaphragms)
+    if (std::abs(world_x(d) - 4.85) < 0.5) near.push_back(&d);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_NEAR(world_x(*near[0]), diaphragm_x, 0.005);
+  EXPECT_NEAR(world_x(*near[1]), plate_x, 0.005);
+  EXPECT_EQ(near[1]->seen_by_frames, 2);
+  ASSERT_TRUE(near[1]->manhole) << near[1]->manhole_reason;
+  EXPECT_NEAR(near[1]->manhole->width_m, manhole_w, 0.015);
+  EXPECT_NEAR(near[1]->manhole->height_m, manhole_h, 0.015);
+}
+
+}  // namespace
+}  // namespace tunnelmap
