@@ -11,6 +11,7 @@
 
 #include "core/fusion/fusion_options.h"
 #include "core/io/dataset.h"
+#include "core/mapping/frame_walls.h"
 #include "core/mapping/station_map_builder.h"
 #include "core/sim/sim_dataset_writer.h"
 #include "core/util/build_paths.h"
@@ -64,7 +65,9 @@ void BM_StationMap(benchmark::State& state) {
     StationMapBuilder builder(station_map_options(params), tunnel_options(params));
     for (std::size_t i = 0; i < results.size(); ++i) {
       results[i].map = detected[i];  // the context step rewrites it
-      builder.add_frame(static_cast<int>(i), results[i], poses[i]);
+      FrameWalls walls;
+      extract_frame_walls(results[i], walls);  // part of the map's cost beyond detection
+      builder.add_frame(static_cast<int>(i), results[i].map, walls, poses[i]);
     }
     const StationMap map = builder.finish(groups);
     sections = map.sections.size();

@@ -25,8 +25,10 @@ std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& res
                                                      const std::optional<Eigen::Isometry3d>& pose,
                                                      const std::optional<Eigen::Vector3d>& gravity) {
   if (pose) {
-    const Eigen::Isometry3d mapped_with = slam_ ? localise(result, *pose, gravity) : *pose;
-    stations_.add_frame(index, result, mapped_with);
+    FrameWalls walls;
+    extract_frame_walls(result, walls);  // a frame with no cross-section may still see a plate
+    const Eigen::Isometry3d mapped_with = slam_ ? localise(result.map, walls, *pose, gravity) : *pose;
+    stations_.add_frame(index, result.map, walls, mapped_with);
     return mapped_with;
   }
   apply_tunnel_context(result.map, tunnel_, recent_);
@@ -36,7 +38,7 @@ std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& res
 
 // The frame's pose group (a new one when the given pose moved or turned past the grouping
 // limits from the group's first), then its pose as the structure so far places it.
-Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isometry3d& pose,
+Eigen::Isometry3d FrameContext::localise(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& pose,
                                          const std::optional<Eigen::Vector3d>& gravity) {
   const Eigen::Isometry3d d = group_first_.inverse() * pose;
   const double turn_deg = Eigen::AngleAxisd(d.linear()).angle() * 180.0 / M_PI;
@@ -44,9 +46,7 @@ Eigen::Isometry3d FrameContext::localise(FrameResult& result, const Eigen::Isome
     ++group_;
     group_first_ = pose;
   }
-  FrameWalls walls;
-  extract_frame_walls(result, walls);  // a frame with no cross-section may still see a plate
-  return slam_->add_frame(result.map, walls, pose, group_, gravity);
+  return slam_->add_frame(map, walls, pose, group_, gravity);
 }
 
 }  // namespace tunnelmap

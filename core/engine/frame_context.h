@@ -31,7 +31,7 @@ class FrameContext {
   const StationMapBuilder& stations() const { return stations_; }
 
  private:
-  Eigen::Isometry3d localise(FrameResult& result, const Eigen::Isometry3d& pose,
+  Eigen::Isometry3d localise(const TunnelMap& map, const FrameWalls& walls, const Eigen::Isometry3d& pose,
                              const std::optional<Eigen::Vector3d>& gravity);
 
   TunnelOptions tunnel_;

@@ -1,5 +1,6 @@
 #include "core/engine/frame_run.h"
 
+#include "core/engine/frame_context.h"
 #include "core/util/error.h"
 
 namespace tunnelmap {
@@ -12,6 +13,15 @@ Stage rerun_from(const RunSettings& settings, const RunSettings& cached) {
   // Nothing changed: the tunnel stage is the cheapest complete re-run.
   return first_changed_stage(cached.params, settings.params).value_or(Stage::Tunnel);
 }
+// A posed frame as a sequence of that frame alone gets it (`detect` on it): placed along the
+// tunnel by its pose, with its own parts (the sections it sees), and no other frame's context.
+// The convex-hull baseline checks its context inside its fit; alone, it has none.
+void place_by_pose(const FrameSource& source, std::size_t index, const RunSettings& settings, FrameRun& run) {
+  if (!run.frame.pose || settings.method == Method::Qhull) return;
+  FrameContext alone(settings.params, world_up(source));
+  alone.apply(static_cast<int>(index), run.result, run.frame.pose, run.frame.gravity);
+}
+
 }  // namespace
 
 Stage run_frame(const FrameSource& source, std::size_t index, const RunSettings& settings, FrameRun& run,
@@ -20,6 +30,7 @@ Stage run_frame(const FrameSource& source, std::size_t index, const RunSettings&
     const Stage from = rerun_from(settings, *cached);
     if (from != Stage::Cloud) {
       make_pipeline(source, settings).run(run.frame, run.result, nullptr, from);
+      place_by_pose(source, index, settings, run);
       return from;
     }
   }
@@ -29,6 +40,7 @@ Stage run_frame(const FrameSource& source, std::size_t index, const RunSettings&
                          std::to_string(source.size()) + ")");
   run.frame = source.load(index);
   make_method_runner(source, settings).run(run.frame, run.result, nullptr);
+  place_by_pose(source, index, settings, run);
   return Stage::Cloud;
 }
 

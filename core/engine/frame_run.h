@@ -1,7 +1,9 @@
 #pragma once
 // One frame viewed on its own (the GUI's current frame, `render`'s frame): loaded, run through
 // the method, and re-run after a parameter change only from the first stage the change affects.
-// The frame gets no context of other frames: a sequence's context comes from RunEngine.
+// A posed frame is placed by its pose as a sequence's only frame would be (its own parts along
+// the tunnel, as `detect` on that frame gives them); the context of other frames comes from
+// RunEngine.
 #include <cstddef>
 
 #include "core/engine/run_settings.h"

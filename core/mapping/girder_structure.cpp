@@ -297,6 +297,7 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     const CentrelineFrame f = map.frame_at(d.station_m);  // the map coordinates' directions there
     d.normal = (n.x() * f.axis + n.y() * f.left() + n.z() * f.up).normalized();
     d.seen_by_frames = static_cast<int>(frames.size());
+    d.frames.assign(frames.begin(), frames.end());
     measure_manhole(map, group, o, d);
     // Without an opening measured, a plate seen whole tells there is none (rim points it has are
     // depth spikes); one seen in part keeps its reason.

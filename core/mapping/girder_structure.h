@@ -43,6 +43,7 @@ struct Diaphragm {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // world: the centre line at the plate
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // world frame, along the axis
   int seen_by_frames = 0;
+  std::vector<int> frames;  // the frames that saw it, in order
   double area_m2 = 0.0;  // plate area seen (5 cm cells)
   bool closed = false;  // its views covered the section but for less than a manhole: no opening
   std::optional<Manhole> manhole;
@@ -52,7 +53,7 @@ struct Diaphragm {
 // The stretch between two plates (or between a plate and the end of the observed extent).
 struct Compartment {
   double from_m = 0.0, to_m = 0.0;
-  double width_m = 0.0, height_m = 0.0;  // NaN: not measured in it
+  double width_m = NAN, height_m = NAN;  // NaN: not measured in it
   bool closed_from = false, closed_to = false;  // the end is a plate
   int stations_measured = 0;
 };

@@ -355,19 +355,8 @@ void StationMapBuilder::apply_context(TunnelMap& m, const Pieces& own,
   describe_tunnel_map(m);
 }
 
-void StationMapBuilder::add_frame(int index, FrameResult& r, const Eigen::Isometry3d& T) {
-  const auto t0 = std::chrono::steady_clock::now();
-  FrameWalls walls;
-  extract_frame_walls(r, walls);  // a frame with no cross-section still gives the plates it faces
-  const double extract_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  add_frame(index, r.map, walls, T);
-  last_frame_ms_ += extract_ms;  // the map's whole cost beyond detection
-}
-
 void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& walls,
                                   const Eigen::Isometry3d& T) {
-  const auto t0 = std::chrono::steady_clock::now();
   const bool placed = ensure_frame(map, T);
   if (placed && !map.detected) {
     // It found no cross-section (a plate fills its view, the walls beside it too short for a
@@ -392,8 +381,6 @@ void StationMapBuilder::add_frame(int index, TunnelMap& map, const FrameWalls& w
   kept.plane_classes.clear();
   kept.plane_outlier.clear();
   kept.plane_candidate_classes.clear();
-  last_frame_ms_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void StationMapBuilder::record_frame_dims(int frame, const Pieces& own) {
@@ -519,6 +506,27 @@ void add_section_maps(const Centreline& line, const double wall_m[4], double s0,
   }
 }
 
+// A pose that found no cross-section may still have placed the plates it faced (a diaphragm
+// filling its view): its rescan is for the section only, and its message says what it gave.
+void note_plates_placed(StationMap& m) {
+  for (PoseGroupStatus& p : m.poses) {
+    if (!p.rescan) continue;
+    std::vector<std::string> placed;
+    for (const Diaphragm& d : m.girder.diaphragms) {
+      const bool seen = std::any_of(d.frames.begin(), d.frames.end(), [&](int f) {
+        return std::find(p.frames.begin(), p.frames.end(), f) != p.frames.end();
+      });
+      if (!seen) continue;
+      char text[64];
+      std::snprintf(text, sizeof text, "%s at station %.3f m", d.kind == "end_wall" ? "the end wall" : "a plate",
+                    d.station_m);
+      placed.push_back(text);
+    }
+    for (std::size_t i = 0; i < placed.size(); ++i)
+      p.message += (i == 0 ? "; its frames placed " : " and ") + placed[i];
+  }
+}
+
 }  // namespace
 
 StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const {
@@ -635,6 +643,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   out.status = "ok";
   out.girder = build_girder_structure(out, plates_);
   if (trim_beyond_end_walls(out, section_walls)) out.girder = build_girder_structure(out, plates_);
+  note_plates_placed(out);
   for (std::size_t i = 0; i < out.sections.size(); ++i)
     add_section_maps(line_, section_walls[i].data(), out.sections[i].from_m, out.sections[i].to_m,
                      tunnel_.forbidden_band_m, out.section_maps);

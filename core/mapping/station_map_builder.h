@@ -28,14 +28,12 @@ class StationMapBuilder {
   // first detected frame's axis; before the first frame.
   void follow(Centreline line);
 
-  // One frame, in frame order: its detection (camera frame, may be a failure) with the cloud and
-  // the plane labels it came from, and its camera-to-world pose. Updates `result.map`: missing
-  // walls inferred from the map so far (else the design), and "inconsistent_with_context" when
-  // the frame disagrees with several frames before it at the stations it sees. Accepted frames
-  // add their wall points to the map; frames that found no cross-section, the plates they face.
-  void add_frame(int index, FrameResult& result, const Eigen::Isometry3d& camera_to_world);
-  // The same from the frame's compact wall samples (extract_frame_walls of its result), for
-  // frames whose images are no longer at hand (rebuilding the map under refined poses).
+  // One frame, in frame order: its detection without context (camera frame, may be a failure),
+  // its compact wall samples (extract_frame_walls of its result) and its camera-to-world pose.
+  // Updates `map`: missing walls inferred from the map so far (else the design), and
+  // "inconsistent_with_context" when the frame disagrees with several frames before it at the
+  // stations it sees. Accepted frames add their wall points to the map; frames that found no
+  // cross-section, the plates they face.
   void add_frame(int index, TunnelMap& map, const FrameWalls& walls,
                  const Eigen::Isometry3d& camera_to_world);
 
@@ -43,7 +41,6 @@ class StationMapBuilder {
   StationMap finish(const std::vector<int>& pose_groups) const;
 
   int frames() const { return static_cast<int>(scans_.size()); }
-  double last_frame_ms() const { return last_frame_ms_; }
 
  private:
   // A plane's points within one station, seen by one frame: their mean position outward from the
@@ -127,7 +124,6 @@ class StationMapBuilder {
   std::vector<PlateView> plates_; // views of plates across the axis (accepted and undetected frames)
   std::map<int, std::vector<FrameDims>> frame_dims_;  // by station, accepted frames
   std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
-  double last_frame_ms_ = 0.0;
 };
 
 }  // namespace tunnelmap

@@ -54,6 +54,14 @@ std::optional<SectionRect> fitted_rect(const TunnelMap& map, const SectionFrame&
   return rect;
 }
 
+// Why a frame has no rectangle to draw: no tunnel, or a pair of walls neither seen nor sized.
+std::string no_fit_reason(const TunnelMap& map) {
+  if (!map.detected) return "tunnel not detected";
+  if (!map.has_width()) return "width unknown (neither side wall seen)";
+  if (!map.has_height()) return "height unknown (neither roof nor floor seen)";
+  return "a wall lies nearly along the cut";
+}
+
 }  // namespace
 
 StationRange visible_stations(const TunnelMap& map) {
@@ -116,6 +124,7 @@ CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& pla
   }
   measure_cut(out);
   out.fitted = fitted_rect(map, f);
+  if (!out.fitted) out.no_fit_reason = no_fit_reason(map);
   if (out.fitted) {
     out.width_source = map.width_source;
     out.height_source = map.height_source;

@@ -5,6 +5,7 @@
 // points, and how far is it from the design.
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/frame/organized_cloud.h"
@@ -31,6 +32,7 @@ struct CrossSection {
   double half_thickness_m = 0.0;  // points within station +- this
   std::vector<SectionPoint> points;
   std::optional<SectionRect> fitted;  // from the walls' planes; a missing wall from the known size
+  std::string no_fit_reason;          // why there is no fitted rectangle (empty when there is)
   std::optional<SectionRect> design;  // the design size, centred on the fitted rectangle
   // Where the fitted rectangle's width and height come from (the map's sources): a dimension
   // filled from the design equals it by construction and is no deviation from it.

@@ -111,6 +111,42 @@ TEST_F(SectionWalkEngine, CancelStopsTheRunAfterTheFrameBeingDelivered) {
   EXPECT_TRUE(engine.cancelled());
 }
 
+// Frame `index` of another source as a sequence of its own.
+class OneFrame : public FrameSource {
+ public:
+  OneFrame(const FrameSource& source, std::size_t index) : source_(source), index_(index) {}
+  std::size_t size() const override { return 1; }
+  DepthFrame load(std::size_t) const override { return source_.load(index_); }
+  std::string describe(std::size_t) const override { return source_.describe(index_); }
+  const Dataset* dataset() const override { return source_.dataset(); }
+
+ private:
+  const FrameSource& source_;
+  std::size_t index_;
+};
+
+// The GUI's frame view and `render` show a posed frame as `detect` on that frame alone gives it:
+// placed by its pose, with the sections it sees itself.
+TEST_F(SectionWalkEngine, AFrameViewedOnItsOwnIsWhatTheEngineGivesForThatFrameAlone) {
+  const auto source = open_input(shared.file("walk"), ReadOptions());
+  int with_parts = 0;
+  for (std::size_t k : {0u, 6u, 9u, 15u}) {
+    FrameRun viewed;
+    run_frame(*source, k, lab_settings(1), viewed);
+    nlohmann::json view = detection_frame_json(k, "", viewed.result);
+    view.erase("timings_ms");
+    const OneFrame alone(*source, k);
+    RunEngine engine(lab_settings(1), &alone);
+    std::vector<nlohmann::json> ran = run_all(alone, engine);
+    ASSERT_EQ(ran.size(), 1u);
+    ran[0]["index"] = k;
+    ran[0]["source"] = "";
+    EXPECT_EQ(view, ran[0]) << "frame " << k;
+    with_parts += view["parts"].size() > 1;
+  }
+  EXPECT_GE(with_parts, 1);  // a frame that sees the section change, whose own parts set its size
+}
+
 TEST(FirstChangedStage, IsTheEarliestStageOfAnyChangedParameter) {
   Parameters a, b;
   EXPECT_FALSE(first_changed_stage(a, b));

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+
 #include <vector>
 
 #include "core/mapping/posed_sequence.h"
@@ -26,7 +29,9 @@ TEST(StationMapPlates, APlateOnlyFramesWithoutACrossSectionSawIsMappedWithItsMan
   std::vector<Eigen::Isometry3d> poses;
   for (int f = 6; f <= 15; ++f) {
     const FrameResult r = girder.detect(f);
-    if (f == 10 || f == 11) ASSERT_FALSE(r.map.detected) << "frame " << f;
+    if (f == 10 || f == 11) {
+      ASSERT_FALSE(r.map.detected) << "frame " << f;
+    }
     maps.push_back(r.map);
     walls.emplace_back();
     extract_frame_walls(r, walls.back());
@@ -46,6 +51,20 @@ TEST(StationMapPlates, APlateOnlyFramesWithoutACrossSectionSawIsMappedWithItsMan
   ASSERT_TRUE(near[1]->manhole) << near[1]->manhole_reason;
   EXPECT_NEAR(near[1]->manhole->width_m, manhole_w, 0.015);
   EXPECT_NEAR(near[1]->manhole->height_m, manhole_h, 0.015);
+
+  // Their pose still needs a rescan for the cross-section, and says which plates it placed.
+  const int frame_10 = 10 - 6;  // its index in the mapped walk
+  const auto saw_frame_10 = [&](const PoseGroupStatus& p) {
+    return std::find(p.frames.begin(), p.frames.end(), frame_10) != p.frames.end();
+  };
+  const auto pose = std::find_if(map.poses.begin(), map.poses.end(), saw_frame_10);
+  ASSERT_NE(pose, map.poses.end());
+  EXPECT_TRUE(pose->rescan);
+  char placed[64];
+  std::snprintf(placed, sizeof placed, "a plate at station %.3f m", near[1]->station_m);
+  EXPECT_NE(pose->message.find("; its frames placed "), std::string::npos) << pose->message;
+  EXPECT_NE(pose->message.find(placed), std::string::npos) << pose->message;
+  for (const PoseGroupStatus& p : map.poses) EXPECT_TRUE(p.rescan || p.message == "ok") << p.message;
 }
 
 }  // namespace

@@ -93,10 +93,17 @@ TEST(CrossSection, AMissingWallIsPlacedFromTheKnownSize) {
   const CrossSection s = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
   ASSERT_TRUE(s.fitted.has_value());
   EXPECT_NEAR(s.fitted->height(), map.height_m, 1e-9);
+  EXPECT_EQ(s.no_fit_reason, "");
+  // Without the height the rectangle cannot be drawn, and the section says why: the tunnel
+  // was found, only its height was not.
   map.height_source = DimensionSource::Unseen;
-  EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05).fitted.has_value());
+  const CrossSection no_height = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
+  EXPECT_FALSE(no_height.fitted.has_value());
+  EXPECT_EQ(no_height.no_fit_reason, "height unknown (neither roof nor floor seen)");
   map.detected = false;
-  EXPECT_FALSE(cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05).fitted.has_value());
+  const CrossSection none = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
+  EXPECT_FALSE(none.fitted.has_value());
+  EXPECT_EQ(none.no_fit_reason, "tunnel not detected");
 }
 
 // A frame that sees a change of section: 0.84 x 1.30 m up to x = 3 m, then 0.78 x 1.26 m. The
