@@ -75,10 +75,6 @@ void CrossSectionPanel::set_frame(std::shared_ptr<const scene::ProcessedFrame> f
   range_ = frame_ && frame_->result.map.detected ? visible_stations(frame_->result.map) : StationRange{};
   const bool usable = range_.to_m > range_.from_m;
   slider_->setEnabled(usable);
-  range_label_->setText(usable ? tr("The frame sees stations %1 to %2 m")
-                                     .arg(range_.from_m, 0, 'f', 2)
-                                     .arg(range_.to_m, 0, 'f', 2)
-                               : tr("No tunnel in this frame: the section shows its points only"));
   if (usable && (station() < range_.from_m || station() > range_.to_m)) {
     const QSignalBlocker block(station_);
     station_->setValue(std::clamp(1.5, range_.from_m, range_.to_m));
@@ -86,7 +82,22 @@ void CrossSectionPanel::set_frame(std::shared_ptr<const scene::ProcessedFrame> f
   recompute();
 }
 
+// The stations the frame's walls reach, and whether the cut lies among them (a plate the map
+// asks for may stand beyond the walls the frame measured).
+void CrossSectionPanel::update_range_label() {
+  if (range_.to_m <= range_.from_m) {
+    range_label_->setText(tr("No tunnel in this frame: the section shows its points only"));
+    return;
+  }
+  const QString range = tr("The frame sees stations %1 to %2 m").arg(range_.from_m, 0, 'f', 2).arg(range_.to_m, 0, 'f', 2);
+  const double s = station();
+  range_label_->setText(s >= range_.from_m && s <= range_.to_m
+                            ? range
+                            : range + tr("; the cut at %1 m lies outside them").arg(s, 0, 'f', 2));
+}
+
 void CrossSectionPanel::recompute() {
+  update_range_label();
   if (range_.to_m > range_.from_m) {
     const QSignalBlocker block(slider_);
     slider_->setValue(static_cast<int>(std::lround((station() - range_.from_m) / (range_.to_m - range_.from_m) * kSliderSteps)));

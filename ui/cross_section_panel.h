@@ -32,6 +32,7 @@ class CrossSectionPanel : public QWidget {
 
  private:
   void recompute();
+  void update_range_label();
 
   std::shared_ptr<const scene::ProcessedFrame> frame_;
   std::optional<double> design_w_, design_h_;

@@ -5,6 +5,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <cmath>
+#include <optional>
 
 #include "core/mapping/rescan_stretches.h"
 
@@ -58,6 +59,7 @@ MapSectionsPanel::MapSectionsPanel(QWidget* parent) : QWidget(parent) {
   tree_->setColumnCount(kColumns);
   tree_->setHeaderLabels({tr("Station (m)"), tr("Width (m)"), tr("Height (m)"), tr("Off design (mm)"), tr("Frames")});
   tree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  tree_->header()->setStretchLastSection(false);  // the frame counts stay under their header
   tree_->setRootIsDecorated(true);
   layout->addWidget(summary_);
   layout->addWidget(tree_, 1);
@@ -70,7 +72,7 @@ MapSectionsPanel::MapSectionsPanel(QWidget* parent) : QWidget(parent) {
 
 void MapSectionsPanel::clear() {
   tree_->clear();
-  notes_ = sections_ = out_of_tolerance_ = rescan_ = diaphragms_ = nullptr;
+  notes_ = sections_ = out_of_tolerance_ = rescan_ = diaphragms_ = compartments_ = nullptr;
   summary_->setText(tr("No map: Processing ▸ Map tunnel on a posed dataset lists its sections here."));
 }
 
@@ -82,6 +84,7 @@ void MapSectionsPanel::set_map(const StationMap& map, const std::vector<std::str
   add_out_of_tolerance(map);
   add_rescan(map);
   add_diaphragms(map);
+  add_compartments(map);
   const bool design = map.options.design_width_m || map.options.design_height_m;
   summary_->setText(design ? tr("%1 section(s), %2 of %3 stations out of tolerance (±%4 mm of the design)")
                                  .arg(map.sections.size())
@@ -119,6 +122,10 @@ void MapSectionsPanel::add_sections(const StationMap& map) {
 }
 
 void MapSectionsPanel::add_out_of_tolerance(const StationMap& map) {
+  if (!map.options.design_width_m && !map.options.design_height_m) {
+    out_of_tolerance_ = group(tree_, tr("Out of tolerance: not checked, no design cross-section given"));
+    return;
+  }
   const auto stations = map.out_of_tolerance();
   out_of_tolerance_ = group(tree_, tr("Out of tolerance (%1)").arg(stations.size()));
   for (const Station* s : stations) {
@@ -154,22 +161,58 @@ void MapSectionsPanel::add_rescan(const StationMap& map) {
   }
 }
 
+// A plate's row: its station, its manhole's width and height in those columns, and the
+// opening's shape (or why there is none) beside them; the clearances and kind in its tooltip.
 void MapSectionsPanel::add_diaphragms(const StationMap& map) {
   const auto& plates = map.girder.diaphragms;
   if (plates.empty()) return;
-  diaphragms_ = group(tree_, tr("Diaphragms (%1)").arg(plates.size()));
+  diaphragms_ = group(tree_, tr("Diaphragms (%1): manhole width and height").arg(plates.size()));
   for (const Diaphragm& d : plates) {
-    const QString opening = d.manhole    ? tr("manhole %1 × %2 m").arg(d.manhole->width_m, 0, 'f', 3).arg(d.manhole->height_m, 0, 'f', 3)
-                            : d.kind == "end_wall" ? tr("end wall")
-                            : d.closed             ? tr("closed: no opening")
-                                                   : tr("no manhole");
-    row(diaphragms_, d.station_m,
-        {QString::number(d.station_m, 'f', 3), opening, QString(), QString(), QString::number(d.seen_by_frames)});
+    const std::optional<Manhole>& m = d.manhole;
+    const QString what = m                     ? QString::fromStdString(m->shape == "rounded_rectangle" ? "rounded rectangle" : m->shape)
+                         : d.kind == "end_wall" ? tr("end wall")
+                         : d.closed             ? tr("closed: no opening")
+                                                : tr("no manhole");
+    QTreeWidgetItem* item = row(diaphragms_, d.station_m,
+                                {QString::number(d.station_m, 'f', 3), m ? metres(m->width_m) : QStringLiteral("–"),
+                                 m ? metres(m->height_m) : QStringLiteral("–"), what, QString::number(d.seen_by_frames)});
+    item->setTextAlignment(kDeviation, Qt::AlignLeft | Qt::AlignVCenter);
+    QString tip = d.kind == "end_wall" ? tr("End wall at station %1 m").arg(d.station_m, 0, 'f', 3)
+                                       : tr("Plate across the girder at station %1 m").arg(d.station_m, 0, 'f', 3);
+    if (m) {
+      const auto clearance = [](double c) { return std::isfinite(c) ? metres(c) + QStringLiteral(" m") : QObject::tr("not measured"); };
+      tip += tr("\nclearance to the left wall %1, right %2, roof %3, floor %4")
+                 .arg(clearance(m->clearance_m[0]), clearance(m->clearance_m[1]), clearance(m->clearance_m[2]),
+                      clearance(m->clearance_m[3]));
+    } else if (!d.manhole_reason.empty()) {
+      tip += QStringLiteral("\n") + QString::fromStdString(d.manhole_reason);
+    }
+    for (int c = kWhere; c < kColumns; ++c) item->setToolTip(c, tip);
+  }
+}
+
+// The stretches between the plates, with the size measured inside each ("–": none measured).
+void MapSectionsPanel::add_compartments(const StationMap& map) {
+  const auto& parts = map.girder.compartments;
+  if (parts.empty()) return;
+  compartments_ = group(tree_, tr("Compartments (%1)").arg(parts.size()));
+  const auto size = [](double v) { return std::isfinite(v) ? metres(v) : QStringLiteral("–"); };
+  for (const Compartment& c : parts) {
+    QTreeWidgetItem* item =
+        row(compartments_, 0.5 * (c.from_m + c.to_m),
+            {tr("%1 – %2").arg(c.from_m, 0, 'f', 2).arg(c.to_m, 0, 'f', 2), size(c.width_m), size(c.height_m),
+             tr("%n station(s) measured", nullptr, c.stations_measured), QString()});
+    item->setTextAlignment(kDeviation, Qt::AlignLeft | Qt::AlignVCenter);
   }
 }
 
 void MapSectionsPanel::select_station(double station_m) {
   if (!sections_) return;
+  // The row clicked (a plate, a stretch to rescan) stands for this station: it stays selected.
+  if (QTreeWidgetItem* current = tree_->currentItem()) {
+    const QVariant at = current->data(kWhere, kStationRole);
+    if (at.isValid() && std::abs(at.toDouble() - station_m) < 1e-9) return;
+  }
   QTreeWidgetItem* best = nullptr;
   for (int i = 0; out_of_tolerance_ && i < out_of_tolerance_->childCount(); ++i) {
     QTreeWidgetItem* item = out_of_tolerance_->child(i);

@@ -1,8 +1,9 @@
 #pragma once
 // The mapped tunnel as lists an inspector works down: its sections (extent, size, frames), the
 // stations out of tolerance (with their deviation from the design), the stretches to rescan
-// (whose width or height no frame measured) and the diaphragm plates; first, the notes on the
-// mapping that `map` prints (pose groups nothing checks, an IMU noisier than weighed).
+// (whose width or height no frame measured), the diaphragm plates with their manholes and the
+// compartments between them; first, the notes on the mapping that `map` prints (pose groups
+// nothing checks, an IMU noisier than weighed).
 // A click on a row asks for that station (the window shows the frame that sees it and cuts the
 // cross-section there, as a click on the profile does); the profile's station selects the row.
 #include <QWidget>
@@ -24,7 +25,8 @@ class MapSectionsPanel : public QWidget {
 
   void set_map(const StationMap& map, const std::vector<std::string>& notes = {});
   void clear();
-  // Selects the section containing `station_m` (or that out-of-tolerance station), no signal.
+  // Selects the section containing `station_m` (or that out-of-tolerance station), no signal;
+  // a selected row that stands for `station_m` stays selected.
   void select_station(double station_m);
   QTreeWidget* tree() const { return tree_; }
   int section_rows() const;
@@ -41,6 +43,7 @@ class MapSectionsPanel : public QWidget {
   void add_out_of_tolerance(const StationMap& map);
   void add_rescan(const StationMap& map);
   void add_diaphragms(const StationMap& map);
+  void add_compartments(const StationMap& map);
 
   QLabel* summary_;
   QTreeWidget* tree_;
@@ -49,6 +52,7 @@ class MapSectionsPanel : public QWidget {
   QTreeWidgetItem* out_of_tolerance_ = nullptr;
   QTreeWidgetItem* rescan_ = nullptr;
   QTreeWidgetItem* diaphragms_ = nullptr;
+  QTreeWidgetItem* compartments_ = nullptr;
 };
 
 }  // namespace tunnelmap::ui

@@ -10,6 +10,7 @@ namespace tunnelmap::ui {
 
 namespace {
 constexpr double kLeft = 52, kRight = 8, kTop = 6, kBottom = 18, kGap = 14, kInset = 6;
+constexpr double kTitleBand = 16;  // the series title's line at the top of its area
 const QColor kSeriesColour[2] = {QColor(30, 110, 200), QColor(200, 90, 30)};
 const QColor kFlagColour(220, 20, 20);
 const QColor kMarkerColour(20, 150, 60);
@@ -130,10 +131,12 @@ void ResultsPlot::draw_series(QPainter& p, int series) const {
   const double span = std::max(hi - lo, 0.004), mid = (hi + lo) / 2;
   lo = mid - 0.55 * span;
   hi = mid + 0.55 * span;
-  auto y_of = [&](double v) { return a.bottom() - a.height() * (v - lo) / (hi - lo); };
+  const QRectF plot = a.adjusted(0, kTitleBand, 0, 0);  // the title's line stays clear of the data
+  auto y_of = [&](double v) { return plot.bottom() - plot.height() * (v - lo) / (hi - lo); };
   if (ref) {
     p.fillRect(QRectF(QPointF(a.left(), y_of(*ref + reference_.tolerance_m)),
-                      QPointF(a.right(), y_of(*ref - reference_.tolerance_m))),
+                      QPointF(a.right(), y_of(*ref - reference_.tolerance_m)))
+                   .intersected(a),
                QColor(120, 200, 120, 60));
     p.setPen(QPen(QColor(60, 60, 60), 1, Qt::DashLine));
     p.drawLine(QPointF(a.left(), y_of(*ref)), QPointF(a.right(), y_of(*ref)));
@@ -160,7 +163,7 @@ void ResultsPlot::draw_series(QPainter& p, int series) const {
   }
   p.setBrush(Qt::NoBrush);
   p.setPen(Qt::darkGray);
-  p.drawText(QRectF(0, a.top() - 2, kLeft - 4, 14), Qt::AlignRight, QString::number(hi, 'f', 3));
+  p.drawText(QRectF(0, plot.top() - 2, kLeft - 4, 14), Qt::AlignRight, QString::number(hi, 'f', 3));
   p.drawText(QRectF(0, a.bottom() - 12, kLeft - 4, 14), Qt::AlignRight, QString::number(lo, 'f', 3));
   p.setPen(kSeriesColour[series]);
   QString title = name;

@@ -206,14 +206,15 @@ void ReviewController::finish_map_tunnel(const std::shared_ptr<const FrameSource
   sections_->set_map(m, notes);
   sections_dock_->show();
   if (!notes.empty()) sections_dock_->raise();  // what the map cannot show, before the profile
-  ctx_.status->set_text(tr("Tunnel mapped from %1 of %2 frame(s): %3 stations over %4 m, %5 section(s), "
-                           "%6 out of tolerance")
+  const bool design = m.options.design_width_m || m.options.design_height_m;
+  ctx_.status->set_text(tr("Tunnel mapped from %1 of %2 frame(s): %3 stations over %4 m, %5 section(s), %6")
                             .arg(m.frames_used)
                             .arg(m.frames)
                             .arg(m.stations.size())
                             .arg(m.sections.back().to_m - m.sections.front().from_m, 0, 'f', 2)
                             .arg(m.sections.size())
-                            .arg(m.out_of_tolerance().size()) +
+                            .arg(design ? tr("%1 out of tolerance").arg(m.out_of_tolerance().size())
+                                        : tr("no tolerance check (no design)")) +
                         (notes.empty() ? QString() : tr("; %n note(s) in Sections", nullptr, static_cast<int>(notes.size()))));
   emit tunnelMapped(true);
 }

@@ -247,6 +247,23 @@ class ProfilePlotTest : public QObject {
 class MapSectionsPanelTest : public QObject {
   Q_OBJECT
 
+  // A shown panel listing `m`, or null when the window never showed.
+  static std::unique_ptr<tunnelmap::ui::MapSectionsPanel> shown_panel(const tunnelmap::StationMap& m) {
+    auto panel = std::make_unique<tunnelmap::ui::MapSectionsPanel>();
+    panel->resize(700, 500);
+    panel->show();
+    if (!QTest::qWaitForWindowExposed(panel.get())) return nullptr;
+    panel->set_map(m);
+    return panel;
+  }
+
+  // The panel's group whose title starts with `title`, or null.
+  static QTreeWidgetItem* top_group(const tunnelmap::ui::MapSectionsPanel& panel, const char* title) {
+    for (int i = 0; i < panel.tree()->topLevelItemCount(); ++i)
+      if (panel.tree()->topLevelItem(i)->text(0).startsWith(title)) return panel.tree()->topLevelItem(i);
+    return nullptr;
+  }
+
  private slots:
   void listsTheStretchesToRescanAndAClickShowsTheirMiddle() {
     tunnelmap::StationMap m = profile_map();
@@ -288,21 +305,53 @@ class MapSectionsPanelTest : public QObject {
     closed.station_m = 1.2, closed.closed = true;
     end.station_m = 1.9, end.closed = true, end.kind = "end_wall";
     m.girder.diaphragms = {open, closed, end};
-    tunnelmap::ui::MapSectionsPanel panel;
-    panel.resize(700, 500);
-    panel.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&panel));
-    panel.set_map(m);
-    QTreeWidgetItem* plates = nullptr;
-    for (int i = 0; i < panel.tree()->topLevelItemCount(); ++i)
-      if (panel.tree()->topLevelItem(i)->text(0).startsWith("Diaphragms")) plates = panel.tree()->topLevelItem(i);
+    const auto panel = shown_panel(m);
+    QVERIFY(panel);
+    QTreeWidgetItem* plates = top_group(*panel, "Diaphragms");
     QVERIFY(plates);
     QCOMPARE(plates->childCount(), 3);
-    QCOMPARE(plates->child(0)->text(1), QStringLiteral("manhole 0.450 × 0.700 m"));
-    QCOMPARE(plates->child(1)->text(1), QStringLiteral("closed: no opening"));
-    QCOMPARE(plates->child(2)->text(1), QStringLiteral("end wall"));
+    // The manhole's width and height stand in the width and height columns, its shape beside.
+    QCOMPARE(plates->child(0)->text(1), QStringLiteral("0.450"));
+    QCOMPARE(plates->child(0)->text(2), QStringLiteral("0.700"));
+    QCOMPARE(plates->child(1)->text(1), QStringLiteral("–"));
+    QCOMPARE(plates->child(1)->text(3), QStringLiteral("closed: no opening"));
+    QCOMPARE(plates->child(2)->text(3), QStringLiteral("end wall"));
+    QVERIFY(plates->child(0)->toolTip(0).contains("clearance to the left wall not measured"));
     plates->setExpanded(true);
-    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel.grab().save(QString(dir) + "/plates_list.png");
+    if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel->grab().save(QString(dir) + "/plates_list.png");
+  }
+
+  void listsTheCompartmentsAndKeepsAClickedPlateSelected() {
+    tunnelmap::StationMap m = profile_map();
+    tunnelmap::Diaphragm plate;
+    plate.station_m = 1.0;
+    m.girder.diaphragms = {plate};
+    tunnelmap::Compartment before, after;
+    before.from_m = 0.0, before.to_m = 1.0, before.closed_to = true;
+    before.width_m = 0.851, before.height_m = 1.302, before.stations_measured = 6;
+    after.from_m = 1.0, after.to_m = 1.2, after.closed_from = true;
+    after.width_m = after.height_m = NAN;  // nothing measured in it
+    m.girder.compartments = {before, after};
+    const auto panel = shown_panel(m);
+    QVERIFY(panel);
+    QTreeWidgetItem* parts = top_group(*panel, "Compartments");
+    QTreeWidgetItem* plates = top_group(*panel, "Diaphragms");
+    QVERIFY(parts && plates);
+    QCOMPARE(parts->text(0), QStringLiteral("Compartments (2)"));
+    QCOMPARE(parts->child(0)->text(0), QStringLiteral("0.00 – 1.00"));
+    QCOMPARE(parts->child(0)->text(1), QStringLiteral("0.851"));
+    QCOMPARE(parts->child(0)->text(2), QStringLiteral("1.302"));
+    QCOMPARE(parts->child(1)->text(1), QStringLiteral("–"));  // unknown, never 0
+    QCOMPARE(parts->child(1)->text(2), QStringLiteral("–"));
+    // The window answers a click by selecting the station; the plate's row stays selected.
+    QTreeWidgetItem* row = plates->child(0);
+    panel->tree()->scrollToItem(row);
+    QTest::qWait(50);
+    QObject::connect(panel.get(), &tunnelmap::ui::MapSectionsPanel::stationChosen, panel.get(),
+                     [&](double s) { panel->select_station(s); });
+    QTest::mouseClick(panel->tree()->viewport(), Qt::LeftButton, {},
+                      panel->tree()->visualItemRect(row).topLeft() + QPoint(30, 5));
+    QCOMPARE(panel->tree()->currentItem(), row);
   }
 };
 

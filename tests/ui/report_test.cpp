@@ -150,6 +150,68 @@ TEST(InspectionReport, ListsEachDiaphragmWithItsManholeOrWhyItHasNone) {
   expect_words_inside_margins(pdf);
 }
 
+TEST(InspectionReport, ListsTheCompartmentsBetweenThePlates) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_compartments");
+  StationMap map = test::make_report_station_map();
+  Compartment first;
+  first.from_m = 0.35;
+  first.to_m = 4.012;
+  first.closed_to = true;
+  first.width_m = 0.8214;
+  first.height_m = 1.2987;
+  first.stations_measured = 31;
+  Compartment unmeasured;  // a gap between two plates, too short for a station
+  unmeasured.from_m = 4.012;
+  unmeasured.to_m = 4.331;
+  unmeasured.closed_from = unmeasured.closed_to = true;
+  unmeasured.width_m = unmeasured.height_m = NAN;
+  map.girder.compartments = {first, unmeasured};
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, write_fake_map_png(dir)));
+  const std::string text = pdf_text(pdf);
+  const std::size_t heading = text.find("Compartments");
+  ASSERT_NE(heading, std::string::npos);
+  for (const char* value : {"C1", "C2", "0.350", "4.012", "3.662", "0.821", "1.299", "31", "4.331", "0.319",
+                            "open \u2013 plate", "plate \u2013 plate"})
+    EXPECT_NE(text.find(value, heading), std::string::npos) << value;
+  // The unmeasured compartment's size is a dash, never a number.
+  const std::size_t c2 = text.find("C2", heading);
+  const std::string row = text.substr(c2, text.find('\n', text.find("plate \u2013 plate", c2)) - c2);
+  EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+  EXPECT_NE(row.find("-"), std::string::npos) << row;
+  expect_words_inside_margins(pdf);
+}
+
+// Poses 0.4 m apart are too close for every name: the plan names the poses to rescan first, and
+// its legend keeps their entry.
+TEST(InspectionReport, ThePlanNamesEveryPoseToRescanAmongCloseNeighbours) {
+  REQUIRE_POPPLER();
+  const std::string dir = fresh_dir("tunnelmap_report_close_poses");
+  StationMap map = test::make_report_station_map();
+  const PoseGroupStatus first = map.poses.front();
+  map.poses.clear();
+  for (int g = 0; g < 60; ++g) {
+    PoseGroupStatus p = first;
+    p.group = g;
+    p.frames = {g};
+    p.camera_to_world.translation() = map.origin + map.axis * (0.5 + 0.4 * g);
+    p.rescan = g == 13 || g == 14 || g == 41;
+    p.message = p.rescan ? "move and rescan: too_few_planes" : "ok";
+    map.poses.push_back(p);
+  }
+  const std::string pdf = dir + "/report.pdf";
+  write_inspection_report(pdf, report_input(map, write_fake_map_png(dir)));
+  const std::string text = pdf_text(pdf);
+  const std::size_t plan = text.find("Plan (top view"), after = text.find("Width against station");
+  ASSERT_NE(plan, std::string::npos);
+  ASSERT_NE(after, std::string::npos);
+  const std::string drawn = text.substr(plan, after - plan);
+  for (const char* name : {"P13", "P41", "pose to rescan"}) EXPECT_NE(drawn.find(name), std::string::npos) << name;
+  EXPECT_EQ(drawn.find("P14"), std::string::npos);  // beside P13: no room for both names
+  expect_words_inside_margins(pdf);
+}
+
 TEST(InspectionReport, HoldsSectionsOutOfToleranceStationsAndRescanPose) {
   REQUIRE_POPPLER();
   const std::string dir = fresh_dir("tunnelmap_report");

@@ -51,6 +51,7 @@ void build(report::Document& doc, const InspectionReportInput& in) {
   }
   add_sections_table(doc, m);
   add_diaphragms_table(doc, m);
+  add_compartments_table(doc, m);
   add_out_of_tolerance_table(doc, m);
   add_rescan_table(doc, m);
   add_rescan_stretches_table(doc, m);

@@ -37,7 +37,44 @@ Row plate_row(std::size_t i, const Diaphragm& d) {
   return r;
 }
 
+// Which ends of a compartment are plates; an open end is where the observed extent stops.
+QString ends(const Compartment& c) {
+  const auto end = [](bool plate) { return plate ? QStringLiteral("plate") : QStringLiteral("open"); };
+  return end(c.closed_from) + QStringLiteral(" – ") + end(c.closed_to);
+}
+
 }  // namespace
+
+void add_compartments_table(Document& doc, const StationMap& m) {
+  doc.add_heading(QStringLiteral("Compartments"));
+  const std::vector<Compartment>& parts = m.girder.compartments;
+  if (parts.empty()) {
+    doc.add_paragraph(QStringLiteral("none: no plate divides the girder where the frames saw it"), doc.font(9.0),
+                      colours::kMuted);
+    return;
+  }
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Compartment& c = parts[i];
+    Row r;
+    r.cells << QStringLiteral("C%1").arg(i + 1) << fixed(c.from_m, 3) << fixed(c.to_m, 3)
+            << fixed(c.to_m - c.from_m, 3) << metres(c.width_m) << metres(c.height_m)
+            << QString::number(c.stations_measured) << ends(c);
+    rows.push_back(r);
+  }
+  const std::vector<Column> cols = {{QStringLiteral("Compartment"), 1.5, Qt::AlignLeft},
+                                    num(QStringLiteral("From (m)")),
+                                    num(QStringLiteral("To (m)")),
+                                    num(QStringLiteral("Length (m)")),
+                                    num(QStringLiteral("Width (m)")),
+                                    num(QStringLiteral("Height (m)")),
+                                    num(QStringLiteral("Stations measured"), 1.2),
+                                    {QStringLiteral("Ends"), 1.3, Qt::AlignLeft}};
+  add_table(doc, cols, rows);
+  doc.add_paragraph(QStringLiteral("Width and height: medians of the stations measured inside the compartment, "
+                                   "away from its plates; a dash where no station was measured."),
+                    doc.font(8.0), colours::kMuted);
+}
 
 void add_diaphragms_table(Document& doc, const StationMap& m) {
   doc.add_heading(QStringLiteral("Diaphragms and manholes"));

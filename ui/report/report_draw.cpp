@@ -1,5 +1,7 @@
 #include "ui/report/report_draw.h"
 
+#include <algorithm>
+
 #include <QFontMetricsF>
 #include <QPainterPath>
 
@@ -54,7 +56,13 @@ void draw_mark(QPainter& p, Mark m, const QPointF& c, double size, const QColor&
 void draw_legend(QPainter& p, const QRectF& row, const std::vector<LegendItem>& items, const QFont& f,
                  const std::function<double(double)>& mm) {
   const QFontMetricsF fm(f, p.device());
-  const double symbol = mm(2.6), gap = mm(1.2), item_gap = mm(5.0);
+  const double symbol = mm(2.6), gap = mm(1.2);
+  // The gaps between items close up (to 1.5 mm) before an item would be left out.
+  double items_w = 0.0;
+  for (const LegendItem& item : items) items_w += symbol * 1.5 + gap + fm.horizontalAdvance(item.text);
+  const double room =
+      items.size() > 1 ? (row.width() - items_w - mm(0.5)) / static_cast<double>(items.size() - 1) : mm(5.0);
+  const double item_gap = std::clamp(room, mm(1.5), mm(5.0));
   double x = row.left();
   p.setFont(f);
   for (const LegendItem& item : items) {

@@ -199,27 +199,36 @@ void add_plan(Document& doc, const StationMap& map) {
         draw_mark(p, Mark::TriangleUp, QPointF(x.at(s.station_m), band_bottom + 0.5 * marks_h), mm(1.8),
                   colours::kAlert);
 
-    // Pose cameras where they stood (rescans in red), named below the marker.
+    // Pose cameras where they stood (rescans in red), named below the marker where the name has
+    // room: the poses to rescan first, so that none of them goes unnamed for a neighbour.
     const Eigen::Vector3d left_dir = m->up.cross(m->axis).normalized();
-    double label_right = -1e18;
     const QFontMetricsF fm_bold(small_bold, p.device());
-    p.setFont(small_bold);
+    struct PoseMark {
+      QPointF at;
+      QString name;
+      bool rescan;
+    };
+    std::vector<PoseMark> marks;
     for (const PoseGroupStatus& pose : m->poses) {
       const Eigen::Vector3d t = pose.camera_to_world.translation();
       const double s = m->station_of(t);
       if (!std::isfinite(s)) continue;
       const double side = std::clamp(left_dir.dot(t - m->origin), -0.45 * widest, 0.45 * widest);
-      const QPointF c(x.at(s), lateral(side));
-      const QColor colour = pose.rescan ? colours::kAlert : kPose;
-      draw_mark(p, Mark::Dot, c, mm(2.4), Qt::white);
-      draw_mark(p, Mark::Dot, c, mm(1.8), colour);
-      const QString name = QStringLiteral("P%1").arg(pose.group);
-      const double w = fm_bold.horizontalAdvance(name) + mm(0.4);
-      if (c.x() - 0.5 * w > label_right + mm(0.8)) {
-        p.setPen(colour);
-        p.drawText(QRectF(c.x() - 0.5 * w, c.y() + mm(1.4), w, lh), Qt::AlignCenter, name);
-        label_right = c.x() + 0.5 * w;
-      }
+      marks.push_back({QPointF(x.at(s), lateral(side)), QStringLiteral("P%1").arg(pose.group), pose.rescan});
+      draw_mark(p, Mark::Dot, marks.back().at, mm(2.4), Qt::white);
+      draw_mark(p, Mark::Dot, marks.back().at, mm(1.8), pose.rescan ? colours::kAlert : kPose);
+    }
+    std::stable_partition(marks.begin(), marks.end(), [](const PoseMark& k) { return k.rescan; });
+    std::vector<std::pair<double, double>> named;  // horizontal extents of the names drawn
+    p.setFont(small_bold);
+    for (const PoseMark& k : marks) {
+      const double w = fm_bold.horizontalAdvance(k.name) + mm(0.4);
+      const double l = k.at.x() - 0.5 * w - mm(0.4), r = k.at.x() + 0.5 * w + mm(0.4);
+      if (std::any_of(named.begin(), named.end(), [&](const auto& n) { return l < n.second && r > n.first; }))
+        continue;
+      named.emplace_back(l, r);
+      p.setPen(k.rescan ? colours::kAlert : kPose);
+      p.drawText(QRectF(k.at.x() - 0.5 * w, k.at.y() + mm(1.4), w, lh), Qt::AlignCenter, k.name);
     }
 
     // Station ruler.
