@@ -128,7 +128,9 @@ QString CrossSectionView::caption() const {
                   .arg(section_.points.size());
   s += tr("\ncut: width %1, height %2").arg(metres(section_.cut_width_m), metres(section_.cut_height_m));
   if (!section_.fitted)
-    return s + tr("\nno fitted rectangle: %1").arg(QString::fromStdString(section_.no_fit_reason));
+    return s + (section_.no_fit_reason.empty()
+                    ? tr("\nno fitted rectangle")
+                    : tr("\nno fitted rectangle: %1").arg(QString::fromStdString(section_.no_fit_reason)));
   s += tr("\nframe fit: %1 \u00d7 %2 m").arg(section_.fitted->width(), 0, 'f', 3).arg(section_.fitted->height(), 0, 'f', 3);
   if (section_.design) {
     s += tr("\ndesign %1 \u00d7 %2 m: width %3, height %4")

@@ -506,12 +506,13 @@ void add_section_maps(const Centreline& line, const double wall_m[4], double s0,
   }
 }
 
-// A pose that found no cross-section may still have placed the plates it faced (a diaphragm
-// filling its view): its rescan is for the section only, and its message says what it gave.
-void note_plates_placed(StationMap& m) {
+// A pose that found no cross-section may still have seen the plates it faced (a diaphragm
+// filling its view), which the map took: its rescan is for the section only, and its message
+// says which plates it saw.
+void note_plates_seen(StationMap& m) {
   for (PoseGroupStatus& p : m.poses) {
     if (!p.rescan) continue;
-    std::vector<std::string> placed;
+    std::vector<std::string> seen_plates;
     for (const Diaphragm& d : m.girder.diaphragms) {
       const bool seen = std::any_of(d.frames.begin(), d.frames.end(), [&](int f) {
         return std::find(p.frames.begin(), p.frames.end(), f) != p.frames.end();
@@ -520,10 +521,10 @@ void note_plates_placed(StationMap& m) {
       char text[64];
       std::snprintf(text, sizeof text, "%s at station %.3f m", d.kind == "end_wall" ? "the end wall" : "a plate",
                     d.station_m);
-      placed.push_back(text);
+      seen_plates.push_back(text);
     }
-    for (std::size_t i = 0; i < placed.size(); ++i)
-      p.message += (i == 0 ? "; its frames placed " : " and ") + placed[i];
+    for (std::size_t i = 0; i < seen_plates.size(); ++i)
+      p.message += (i == 0 ? "; its frames saw " : " and ") + seen_plates[i];
   }
 }
 
@@ -643,7 +644,7 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   out.status = "ok";
   out.girder = build_girder_structure(out, plates_);
   if (trim_beyond_end_walls(out, section_walls)) out.girder = build_girder_structure(out, plates_);
-  note_plates_placed(out);
+  note_plates_seen(out);
   for (std::size_t i = 0; i < out.sections.size(); ++i)
     add_section_maps(line_, section_walls[i].data(), out.sections[i].from_m, out.sections[i].to_m,
                      tunnel_.forbidden_band_m, out.section_maps);

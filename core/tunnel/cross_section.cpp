@@ -54,11 +54,27 @@ std::optional<SectionRect> fitted_rect(const TunnelMap& map, const SectionFrame&
   return rect;
 }
 
-// Why a frame has no rectangle to draw: no tunnel, or a pair of walls neither seen nor sized.
+// Why one pair of opposite walls gives no edges to the rectangle (empty when it does, as far as
+// seen and sized go): both are needed, or one and the size the map knows.
+std::string pair_reason(const TunnelMap& map, WallClass a, WallClass b, bool size_known, const char* names[2],
+                        const char* size) {
+  const bool seen_a = map.wall(a).found, seen_b = map.wall(b).found;
+  if (seen_a && seen_b) return "";
+  if (!seen_a && !seen_b) return std::string("neither ") + names[0] + " nor " + names[1] + " seen";
+  if (size_known) return "";
+  return std::string("only the ") + (seen_a ? names[0] : names[1]) + " seen and the " + size + " unknown";
+}
+
+// Why a frame has no rectangle to draw: no tunnel, a pair of walls neither seen nor sized, or a
+// wall too near the cut's direction to cross it.
 std::string no_fit_reason(const TunnelMap& map) {
   if (!map.detected) return "tunnel not detected";
-  if (!map.has_width()) return "width unknown (neither side wall seen)";
-  if (!map.has_height()) return "height unknown (neither roof nor floor seen)";
+  const char* sides[2] = {"left wall", "right wall"};
+  const char* ends[2] = {"floor", "roof"};
+  const std::string width = pair_reason(map, WallClass::Left, WallClass::Right, map.has_width(), sides, "width");
+  if (!width.empty()) return width;
+  const std::string height = pair_reason(map, WallClass::Bottom, WallClass::Top, map.has_height(), ends, "height");
+  if (!height.empty()) return height;
   return "a wall lies nearly along the cut";
 }
 

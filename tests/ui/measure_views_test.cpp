@@ -321,6 +321,19 @@ class MapSectionsPanelTest : public QObject {
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) panel->grab().save(QString(dir) + "/plates_list.png");
   }
 
+  void withoutADesignNothingIsCountedOutOfTolerance() {
+    tunnelmap::StationMap m = profile_map();
+    m.options.design_width_m.reset();
+    m.options.design_height_m.reset();
+    const auto panel = shown_panel(m);
+    QVERIFY(panel);
+    QTreeWidgetItem* group = top_group(*panel, "Out of tolerance");
+    QVERIFY(group);
+    QCOMPARE(group->text(0), QStringLiteral("Out of tolerance: not checked, no design cross-section given"));
+    QCOMPARE(group->childCount(), 0);
+    QCOMPARE(panel->out_of_tolerance_rows(), 0);
+  }
+
   void listsTheCompartmentsAndKeepsAClickedPlateSelected() {
     tunnelmap::StationMap m = profile_map();
     tunnelmap::Diaphragm plate;

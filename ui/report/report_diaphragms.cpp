@@ -49,7 +49,7 @@ void add_compartments_table(Document& doc, const StationMap& m) {
   doc.add_heading(QStringLiteral("Compartments"));
   const std::vector<Compartment>& parts = m.girder.compartments;
   if (parts.empty()) {
-    doc.add_paragraph(QStringLiteral("none: no plate divides the girder where the frames saw it"), doc.font(9.0),
+    doc.add_paragraph(QStringLiteral("none: no stretch of the girder long enough for a station was observed"), doc.font(9.0),
                       colours::kMuted);
     return;
   }

@@ -143,6 +143,18 @@ TEST_F(SectionWalkEngine, AFrameViewedOnItsOwnIsWhatTheEngineGivesForThatFrameAl
     ran[0]["source"] = "";
     EXPECT_EQ(view, ran[0]) << "frame " << k;
     with_parts += view["parts"].size() > 1;
+    // A slider's re-run from the tunnel stage places the frame again, as a full run does.
+    RunSettings designed = lab_settings(1);
+    designed.params.set(tunnel_keys::design_width_m, 0.82);
+    designed.params.set(tunnel_keys::design_height_m, 1.30);
+    const RunSettings before = lab_settings(1);
+    ASSERT_EQ(run_frame(*source, k, designed, viewed, &before), Stage::Tunnel);
+    FrameRun full;
+    run_frame(*source, k, designed, full);
+    nlohmann::json rerun_json = detection_frame_json(k, "", viewed.result), full_json = detection_frame_json(k, "", full.result);
+    rerun_json.erase("timings_ms");
+    full_json.erase("timings_ms");
+    EXPECT_EQ(rerun_json, full_json) << "frame " << k;
   }
   EXPECT_GE(with_parts, 1);  // a frame that sees the section change, whose own parts set its size
 }

@@ -52,7 +52,7 @@ TEST(StationMapPlates, APlateOnlyFramesWithoutACrossSectionSawIsMappedWithItsMan
   EXPECT_NEAR(near[1]->manhole->width_m, manhole_w, 0.015);
   EXPECT_NEAR(near[1]->manhole->height_m, manhole_h, 0.015);
 
-  // Their pose still needs a rescan for the cross-section, and says which plates it placed.
+  // Their pose still needs a rescan for the cross-section, and says which plates it saw.
   const int frame_10 = 10 - 6;  // its index in the mapped walk
   const auto saw_frame_10 = [&](const PoseGroupStatus& p) {
     return std::find(p.frames.begin(), p.frames.end(), frame_10) != p.frames.end();
@@ -60,10 +60,10 @@ TEST(StationMapPlates, APlateOnlyFramesWithoutACrossSectionSawIsMappedWithItsMan
   const auto pose = std::find_if(map.poses.begin(), map.poses.end(), saw_frame_10);
   ASSERT_NE(pose, map.poses.end());
   EXPECT_TRUE(pose->rescan);
-  char placed[64];
-  std::snprintf(placed, sizeof placed, "a plate at station %.3f m", near[1]->station_m);
-  EXPECT_NE(pose->message.find("; its frames placed "), std::string::npos) << pose->message;
-  EXPECT_NE(pose->message.find(placed), std::string::npos) << pose->message;
+  char plate[64];
+  std::snprintf(plate, sizeof plate, "a plate at station %.3f m", near[1]->station_m);
+  EXPECT_NE(pose->message.find("; its frames saw "), std::string::npos) << pose->message;
+  EXPECT_NE(pose->message.find(plate), std::string::npos) << pose->message;
   for (const PoseGroupStatus& p : map.poses) EXPECT_TRUE(p.rescan || p.message == "ok") << p.message;
 }
 

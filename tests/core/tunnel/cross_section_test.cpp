@@ -95,11 +95,17 @@ TEST(CrossSection, AMissingWallIsPlacedFromTheKnownSize) {
   EXPECT_NEAR(s.fitted->height(), map.height_m, 1e-9);
   EXPECT_EQ(s.no_fit_reason, "");
   // Without the height the rectangle cannot be drawn, and the section says why: the tunnel
-  // was found, only its height was not.
+  // was found, the floor was seen, the height was not known.
   map.height_source = DimensionSource::Unseen;
   const CrossSection no_height = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
   EXPECT_FALSE(no_height.fitted.has_value());
-  EXPECT_EQ(no_height.no_fit_reason, "height unknown (neither roof nor floor seen)");
+  EXPECT_EQ(no_height.no_fit_reason, "only the floor seen and the height unknown");
+  // A size known (from context) does not place a pair of walls neither of which was seen.
+  map.height_source = DimensionSource::Context;
+  map.wall(WallClass::Bottom).found = false;
+  const CrossSection no_ends = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
+  EXPECT_FALSE(no_ends.fitted.has_value());
+  EXPECT_EQ(no_ends.no_fit_reason, "neither floor nor roof seen");
   map.detected = false;
   const CrossSection none = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
   EXPECT_FALSE(none.fitted.has_value());
