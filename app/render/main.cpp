@@ -24,7 +24,7 @@ using namespace tunnelmap;
 // A map mesh PLY: the mesh layer only (unless --layers says otherwise), framed by the tunnel the
 // mesh's walls describe, with a light kit so that no face turned from the camera goes black.
 int run_mesh(const render::RenderOptions& opt) {
-  const render::MapMesh mesh = render::load_map_mesh(opt.in.input);
+  const render::MapMesh mesh = render::load_map_mesh(opt.in.input, opt.cutaway);
   render::OsMesaWindow window(opt.width, opt.height);
   scene::TunnelScene scene;
   scene::SceneGeometry geometry;
@@ -118,6 +118,9 @@ int main(int argc, char** argv) {
                "Draw the station map of a posed dataset (as `tunnelmap-cli map` builds it) instead of one frame");
   app.add_option("--mesh", opt.mesh, "With --map: a fused mesh PLY (`fuse --ply`) drawn under the map");
   app.add_flag("--no-pose-refinement", opt.no_pose_refinement, "With --map: the poses as given");
+  app.add_flag("--cutaway", opt.cutaway,
+               "A map (a map PLY or --map): leave out the roof and the right wall, so that the floor, the left "
+               "wall and the plates with their manholes show from above");
   try {
     app.parse(argc, argv);
     opt.view = scene::parse_view(view);

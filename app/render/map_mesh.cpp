@@ -115,7 +115,7 @@ bool is_mesh_input(const std::string& path) {
   return ext == ".ply";
 }
 
-MapMesh load_map_mesh(const std::string& path) {
+MapMesh load_map_mesh(const std::string& path, bool cutaway) {
   const PlyMesh mesh = read_ply_mesh(path);
   if (mesh.triangles.empty()) throw InputError(path, "has no triangles to show (not a map or mesh PLY)");
   MapMesh out;
@@ -124,8 +124,15 @@ MapMesh load_map_mesh(const std::string& path) {
   auto is_boundary = [&](std::size_t f) {
     return labelled && mesh.face_labels[f] == static_cast<int>(MapFaceLabel::Boundary);
   };
-  out.poly = scene::mesh_polydata(mesh, [&](std::size_t f) { return !is_boundary(f); });
-  out.boundary = scene::mesh_polydata(mesh, is_boundary);
+  // The oblique camera stands above the right wall: without the roof and that wall it looks in.
+  const bool walled = mesh.face_walls.size() == mesh.triangles.size();
+  auto cut = [&](std::size_t f) {
+    return cutaway && walled &&
+           (mesh.face_walls[f] == static_cast<int>(WallClass::Top) ||
+            mesh.face_walls[f] == static_cast<int>(WallClass::Right));
+  };
+  out.poly = scene::mesh_polydata(mesh, [&](std::size_t f) { return !is_boundary(f) && !cut(f); });
+  out.boundary = scene::mesh_polydata(mesh, [&](std::size_t f) { return is_boundary(f) && !cut(f); });
   out.frame = frame_of(mesh);
   out.triangles = mesh.triangles.size();
   return out;

@@ -24,7 +24,9 @@ struct MapMesh {
 bool is_mesh_input(const std::string& path);
 
 // Reads the PLY with the project's strict reader; InputError naming the file when it cannot be
-// read or has no triangles.
-MapMesh load_map_mesh(const std::string& path);
+// read or has no triangles. `cutaway` leaves out the roof and the right wall (faces whose `wall`
+// says so), so that a camera above the right wall sees the floor, the left wall and the plates
+// with their manholes inside; the frame is still that of the whole mesh.
+MapMesh load_map_mesh(const std::string& path, bool cutaway = false);
 
 }  // namespace tunnelmap::render

@@ -54,7 +54,7 @@ MapMesh station_map_mesh(const RenderOptions& opt, StationMap* summary) {
   TempFolder tmp;
   const std::string ply = tmp.file("map.ply");
   write_sectioned_map_ply(ply, m.section_maps, pipeline.params().to_json(), plate_outlines(m));
-  return load_map_mesh(ply);
+  return load_map_mesh(ply, opt.cutaway);
 }
 
 void cull_back_faces(vtkRenderer* renderer, vtkPolyData* mesh) {

@@ -22,6 +22,7 @@ struct RenderOptions {
   bool map = false;                  // draw the dataset's station map instead of one frame
   std::string mesh;                  // with map: the fused mesh PLY drawn under the map
   bool no_pose_refinement = false;   // with map: the poses as given
+  bool cutaway = false;              // a map: without its roof and right wall, to look inside
   int max_points = scene::kDefaultDisplayPoints;  // point-layer decimation, as in the GUI
 };
 

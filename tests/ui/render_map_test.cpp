@@ -11,6 +11,7 @@
 
 #include "ui/report/report_map_image.h"
 #include "core/export/map_ply.h"
+#include "core/export/plate_mesh.h"
 #include "core/util/build_paths.h"
 #include "tests/ui/fresh_dir.h"
 #include "tests/ui/synthetic_tunnel.h"
@@ -33,6 +34,34 @@ std::string write_map(const std::string& dir) {
   const std::string path = dir + "/map.ply";
   write_map_ply(path, pf.result.map, nlohmann::json::object(), to_world);
   return path;
+}
+
+// The same tunnel in its own frame with a plate across it at 6 m, its manhole 0.5 x 0.7 m.
+std::string write_map_with_plate(const std::string& dir) {
+  const TunnelMap map = test::make_synthetic_tunnel(0.82, 1.30, 12.0).result.map;
+  PlateOutline plate;
+  const Eigen::Vector3d axis = map.axis_dir.normalized(), up = map.up.normalized();
+  plate.centre = map.axis_point + 6.0 * axis;
+  plate.up = up;
+  plate.left = up.cross(axis).normalized();
+  plate.width_m = map.width_m;
+  plate.height_m = map.height_m;
+  plate.opening = PlateOpening{0.0, 0.0, 0.5, 0.7, "ellipse", 0.0};
+  const std::string path = dir + "/plated.ply";
+  write_sectioned_map_ply(path, {map}, nlohmann::json::object(), {plate});
+  return path;
+}
+
+// Lit plate grey (the map's plates are 150,155,165): nearly equal channels, neither dark nor the
+// background.
+int grey_pixels(const scene::RgbImage& img) {
+  int n = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const int r = img.at(x, y)[0], g = img.at(x, y)[1], b = img.at(x, y)[2];
+      if (r > 80 && std::abs(r - g) < 25 && b >= g && b - r < 40) ++n;
+    }
+  return n;
 }
 
 struct RenderRun {
@@ -132,6 +161,27 @@ TEST(RenderMapPly, AlongSideAndTopViewsWorkOnAMap) {
     }
     EXPECT_GT(scene::compare_images(img, oblique, 30).fraction_over, 0.1) << view << " looks like oblique";
   }
+}
+
+TEST(RenderMapPly, TheCutawayShowsThePlateInsideTheBox) {
+  const std::string dir = fresh_dir("tunnelmap_render_map_cutaway");
+  const std::string ply = write_map_with_plate(dir);
+  const RenderRun closed = render(ply + " --size 640x400", dir + "/closed.png");
+  const RenderRun open = render(ply + " --size 640x400 --cutaway", dir + "/open.png");
+  ASSERT_EQ(closed.status, 0) << closed.line;
+  ASSERT_EQ(open.status, 0) << open.line;
+  // The frame is still the whole tunnel's: the same size either way.
+  EXPECT_NE(open.line.find("width 0.82"), std::string::npos) << open.line;
+  EXPECT_NE(open.line.find("height 1.3"), std::string::npos) << open.line;
+  const int hidden = grey_pixels(scene::load_png(dir + "/closed.png"));
+  const int shown = grey_pixels(scene::load_png(dir + "/open.png"));
+  // A 0.82 x 1.30 m plate less its manhole, seen obliquely in a 12 m view 640 px wide.
+  EXPECT_GT(shown, 400) << "the plate does not show through the cutaway";
+  EXPECT_LT(hidden, shown / 4) << "the closed box should hide its plate";
+  int red = 0, orange = 0;
+  count_zone_colours(scene::load_png(dir + "/open.png"), red, orange);
+  EXPECT_GT(red, 3000) << "the floor and the left wall should still show";
+  if (const char* dump = std::getenv("TUNNELMAP_UI_DUMP")) fs::copy_file(dir + "/open.png", std::string(dump) + "/map_cutaway.png", fs::copy_options::overwrite_existing);
 }
 
 TEST(RenderMapPly, BadPlyIsExitThreeAndNoImage) {

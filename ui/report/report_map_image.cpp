@@ -64,7 +64,7 @@ bool render_map_image_with(const std::string& renderer, const std::string& map_p
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
-  std::vector<std::string> args = {renderer, map_ply, "--screenshot", png, "--view", "oblique", "--size", kImageSize};
+  std::vector<std::string> args = {renderer, map_ply, "--screenshot", png, "--view", "oblique", "--cutaway", "--size", kImageSize};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
