@@ -111,7 +111,7 @@ class MainWindow : public QMainWindow {
   // Review (ReviewController) and fusion (FusionController).
   void map_tunnel() { review_->map_tunnel(); }
   bool map_running() const { return review_->map_running(); }
-  bool show_station(double station_m) { return review_->show_station(station_m); }
+  bool show_station(double station_m, QString* why_not = nullptr) { return review_->show_station(station_m, why_not); }
   CrossSectionPanel* cross_section() const { return review_->cross_section(); }
   MapSectionsPanel* map_sections() const { return review_->map_sections(); }
   ProfilePlot* profile() const { return review_->profile(); }

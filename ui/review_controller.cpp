@@ -224,14 +224,28 @@ std::optional<ReviewController::MappedTunnel> ReviewController::mapped_tunnel() 
   return MappedTunnel{&profile_->map(), review_map_->params, review_map_->notes};
 }
 
-bool ReviewController::show_station(double station_m) {
-  if (review_map_->source != ctx_.source || profile_->map().stations.empty()) return false;
-  const auto view = frame_for_station(profile_->map(), review_map_->poses, review_map_->detected, station_m);
+bool ReviewController::show_station(double station_m, QString* why_not) {
+  const auto refuse = [&](const QString& why) {
+    if (why_not) *why_not = why;
+    return false;
+  };
+  if (review_map_->source != ctx_.source || profile_->map().stations.empty())
+    return refuse(tr("no map of this input (Processing > Map tunnel first)"));
+  const StationMap& map = profile_->map();
+  const double first = map.stations.front().station_m, last = map.stations.back().station_m;
+  if (station_m < first || station_m > last) {
+    const QString why = tr("station %1 m lies outside the map, whose stations run from %2 to %3 m")
+                            .arg(station_m, 0, 'f', 2).arg(first, 0, 'f', 2).arg(last, 0, 'f', 2);
+    ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
+    return refuse(why);
+  }
+  const auto view = frame_for_station(map, review_map_->poses, review_map_->detected, station_m);
   profile_->set_current_station(station_m);
   sections_->select_station(station_m);
   if (!view) {
-    ctx_.status->set_text(tr("No frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2));
-    return false;
+    const QString why = tr("no frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2);
+    ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
+    return refuse(why);
   }
   cross_section_dock_->show();
   cross_section_dock_->raise();

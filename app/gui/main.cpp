@@ -162,8 +162,9 @@ int main(int argc, char** argv) {
     });
     QObject::connect(&window, &tunnelmap::ui::MainWindow::tunnelMapped, &window, [&](bool ok) {
       if (!ok) return fail(window.last_error());
-      if (cli.isSet(station_opt) && !window.show_station(station))
-        return fail(QString("--station %1: no frame sees that station").arg(station));
+      QString why_not;
+      if (cli.isSet(station_opt) && !window.show_station(station, &why_not))
+        return fail(QString("--station %1: %2").arg(station).arg(why_not));
       map_done = true;
       // The station's frame is already shown (or no station asked): nothing else will come.
       if (window.last_outcome().frame_index == window.frame_index()) {

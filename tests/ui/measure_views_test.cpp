@@ -573,6 +573,15 @@ class MapReviewTest : public QObject {
     if (w.frame_index() != before) QVERIFY(shown.wait(30000));
     QVERIFY(w.show_station(m.sections[0].from_m + 0.3));
     QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));
+    // A station past the map's end is refused with the map's extent, and the selection stays.
+    QString why;
+    const double past = m.stations.back().station_m + 5.0;
+    QVERIFY(!w.show_station(past, &why));
+    const QString extent = QString("from %1 to %2 m").arg(m.stations.front().station_m, 0, 'f', 2)
+                               .arg(m.stations.back().station_m, 0, 'f', 2);
+    QVERIFY2(why.contains("outside the map") && why.contains(extent), qPrintable(why));
+    QVERIFY2(w.status_text().contains(extent), qPrintable(w.status_text()));
+    QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));
     if (const char* dir = std::getenv("TUNNELMAP_GUI_SHOT_DIR")) w.grab().save(QString(dir) + "/review_window.png");
   }
 
@@ -789,7 +798,9 @@ class MapReviewTest : public QObject {
     QCOMPARE(mapped.count(), 1);
     QCOMPARE(mapped.at(0).at(0).toBool(), false);
     QVERIFY2(w.last_error().contains("needs a posed dataset"), qPrintable(w.last_error()));
-    QVERIFY(!w.show_station(1.0));
+    QString why;
+    QVERIFY(!w.show_station(1.0, &why));
+    QVERIFY2(why.contains("no map"), qPrintable(why));
   }
 };
 
