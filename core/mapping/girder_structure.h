@@ -44,7 +44,7 @@ struct Diaphragm {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // world frame, along the axis
   int seen_by_frames = 0;
   std::vector<int> frames;  // the frames that saw it, in order
-  double area_m2 = 0.0;  // plate area seen (5 cm cells)
+  double area_m2 = 0.0;  // plate area seen (5 cm cells, each edge cell counted half)
   bool closed = false;  // its views covered the section but for less than a manhole: no opening
   std::optional<Manhole> manhole;
   std::string manhole_reason;  // why there is no manhole
