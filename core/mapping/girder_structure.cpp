@@ -290,8 +290,13 @@ void measure_manhole(const StationMap& map, const std::vector<const PlateView*>&
   d.manhole = m;
 }
 
+bool any_checked(const std::vector<const PlateView*>& group) {
+  return std::any_of(group.begin(), group.end(), [](const PlateView* v) { return v->checked; });
+}
+
+// The plates, in station order; a plate only unchecked views saw goes to `unchecked` instead.
 std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<PlateView>& views,
-                                       const GirderStructureOptions& o) {
+                                       const GirderStructureOptions& o, std::vector<UncheckedPlate>& unchecked) {
   std::vector<Diaphragm> out;
   for (const auto& group : group_views(views, o.plate_gap_m)) {
     std::vector<double> stations, weights;
@@ -312,6 +317,10 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
     if (plate_area(group, o.cell_m) < needed && !(area_inside_both_sections(map, group, d.station_m, o.cell_m) >= o.min_plate_area_m2))
       continue;
+    if (!any_checked(group)) {
+      unchecked.push_back({d.station_m, std::vector<int>(frames.begin(), frames.end())});
+      continue;
+    }
     const Eigen::Vector3d n = plate_normal(group);
     const CentrelineFrame f = map.frame_at(d.station_m);  // the map coordinates' directions there
     d.normal = (n.x() * f.axis + n.y() * f.left() + n.z() * f.up).normalized();
@@ -438,7 +447,7 @@ std::vector<double> transverse_plate_stations(const std::vector<PlateView>& view
                                               const GirderStructureOptions& options) {
   std::vector<double> out;
   for (const auto& group : group_views(views, options.plate_gap_m)) {
-    if (plate_area(group, options.cell_m) < options.min_plate_area_m2) continue;
+    if (plate_area(group, options.cell_m) < options.min_plate_area_m2 || !any_checked(group)) continue;
     std::vector<double> stations;
     for (const PlateView* v : group)
       for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
@@ -451,7 +460,7 @@ std::vector<double> transverse_plate_stations(const std::vector<PlateView>& view
 GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
                                        const GirderStructureOptions& options) {
   GirderStructure g;
-  g.diaphragms = find_diaphragms(map, views, options);
+  g.diaphragms = find_diaphragms(map, views, options, g.unchecked_plates);
   mark_end_walls(map, options, g.diaphragms);
   g.compartments = find_compartments(map, g.diaphragms, options);
   g.centreline = find_centreline(map);

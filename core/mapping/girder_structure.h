@@ -21,6 +21,7 @@ struct PlateView {
   std::vector<Eigen::Vector3d> samples;
   std::vector<double> weights;
   std::vector<Eigen::Vector3d> rim;  // points on the edge of an opening in it
+  bool checked = true;  // false: its frame's pose is one nothing checks (placed by that pose alone)
 };
 
 struct Manhole {
@@ -81,8 +82,16 @@ struct GirderStructureOptions {
   double max_closed_gap_m2 = 0.05;
 };
 
+// A face as large as a plate that only frames whose poses nothing checks saw: a pose off by
+// metres would put a plate where there is none, so it is not mapped, and said.
+struct UncheckedPlate {
+  double station_m = 0.0;
+  std::vector<int> frames;
+};
+
 struct GirderStructure {
   std::vector<Diaphragm> diaphragms;
+  std::vector<UncheckedPlate> unchecked_plates;
   std::vector<Compartment> compartments;
   std::vector<CentrelinePoint> centreline;
 };

@@ -38,4 +38,9 @@ struct PoseRefinement {
   double ms = 0.0;                       // the estimate's time, every frame's share included
 };
 
+// The frames of the pose groups that share no wall or plate with any other (nothing constrained
+// their correction), when other groups do share some: what they saw lies where their poses
+// alone put it. Empty when the refinement did not run or no group was tied.
+std::vector<int> frames_nothing_checks(const PoseRefinement& refinement);
+
 }  // namespace tunnelmap

@@ -44,6 +44,7 @@ MappedSequence map_posed_sequence(std::vector<TunnelMap>& maps, const std::vecto
     if (out.refinement.ran) out.poses = out.refinement.poses;
   }
   StationMapBuilder builder(so, tunnel_options(params));
+  builder.set_unchecked_frames(frames_nothing_checks(out.refinement));
   if (so.follow_centreline) follow_fitted_centreline(builder, maps, out.poses, so);
   for (std::size_t i = 0; i < maps.size(); ++i)
     builder.add_frame(static_cast<int>(i), maps[i], walls[i], out.poses[i]);

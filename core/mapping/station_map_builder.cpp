@@ -442,6 +442,7 @@ void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, cons
     if (s.wall != kTransverseSample) continue;
     PlateView& v = by_plane[s.plane];
     v.frame = frame;
+    v.checked = !std::binary_search(unchecked_frames_.begin(), unchecked_frames_.end(), frame);
     v.samples.push_back(map_coordinates(s.point));
     v.weights.push_back(s.points);
   }

@@ -37,6 +37,10 @@ class StationMapBuilder {
   void add_frame(int index, TunnelMap& map, const FrameWalls& walls,
                  const Eigen::Isometry3d& camera_to_world);
 
+  // Frames whose poses nothing checks (frames_nothing_checks): a plate only they saw is not
+  // mapped but listed in the girder's `unchecked_plates`. Before their frames are added.
+  void set_unchecked_frames(std::vector<int> frames) { unchecked_frames_ = std::move(frames); }
+
   // The map of every frame added so far. `pose_groups[i]`: group of the i-th frame added.
   StationMap finish(const std::vector<int>& pose_groups) const;
 
@@ -124,6 +128,7 @@ class StationMapBuilder {
   std::vector<PlateView> plates_; // views of plates across the axis (accepted and undetected frames)
   std::map<int, std::vector<FrameDims>> frame_dims_;  // by station, accepted frames
   std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
+  std::vector<int> unchecked_frames_;  // sorted
 };
 
 }  // namespace tunnelmap

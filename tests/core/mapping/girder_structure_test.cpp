@@ -151,6 +151,14 @@ TEST_F(GirderWalk, APoseMetresOffIsToldAsUncheckedNotMappedSilently) {
   const nlohmann::json m = nlohmann::json::parse(slurp(copy.file("m.json")));
   for (const nlohmann::json& p : m["poses"])
     EXPECT_EQ(p["refinement"]["constrained"].empty(), p["group"] == 3) << p.dump();
+  // The plate it saw lands 10 m past the girder's plates: told, not mapped as a fourth plate.
+  EXPECT_EQ(m["diaphragms"].size(), doc["diaphragms"].size()) << m["diaphragms"].dump(1);
+  const std::string note = m["notes"].empty() ? "" : m["notes"][0].get<std::string>();
+  const auto at = note.find("but for the plate it saw at station ");
+  ASSERT_NE(at, std::string::npos) << note;
+  const double phantom = std::atof(note.c_str() + at + 36);
+  EXPECT_GT(phantom, doc["diaphragms"].back()["station_m"].get<double>() + 5.0) << note;
+  EXPECT_NE(note.find("which is not mapped"), std::string::npos) << note;
   // The walk as simulated has no such pose.
   EXPECT_EQ(map.out.find("nothing it saw"), std::string::npos) << map.out;
 }
@@ -405,6 +413,24 @@ TEST(GirderPlates, APlatesAreaIsWhatItCoversNotTheCellsItsEdgesCut) {
     }
   }
   for (int p = 0; p < 2; ++p) EXPECT_NEAR(sum[p] / kOffsets, truth[p], 0.01) << p;
+}
+
+TEST(GirderPlates, APlateOnlyPosesNothingChecksSawIsToldNotMapped) {
+  // Closed plates at 3 and 5 m: frames 0-1 (checked) saw both, frame 2 (a pose nothing checks)
+  // saw the one at 5 m and one at 7 m that no one else saw.
+  const StationMap map = two_section_map();
+  const auto all = [](double, double) { return true; };
+  std::vector<PlateView> views{face_view(0, 3.0, all), face_view(1, 3.0, all), face_view(0, 5.0, all),
+                               face_view(1, 5.0, all), face_view(2, 5.0, all), face_view(2, 7.0, all)};
+  for (PlateView& v : views) v.checked = v.frame != 2;
+  const GirderStructure g = build_girder_structure(map, views);
+  ASSERT_EQ(g.diaphragms.size(), 2u);
+  EXPECT_NEAR(g.diaphragms[1].station_m, 5.0, 1e-9);
+  EXPECT_EQ(g.diaphragms[1].seen_by_frames, 3);  // the unchecked view of a checked plate counts
+  ASSERT_EQ(g.unchecked_plates.size(), 1u);
+  EXPECT_NEAR(g.unchecked_plates[0].station_m, 7.0, 1e-9);
+  EXPECT_EQ(g.unchecked_plates[0].frames, std::vector<int>{2});
+  EXPECT_EQ(transverse_plate_stations(views), (std::vector<double>{3.0, 5.0}));
 }
 
 TEST(GirderPlates, ASmallManholeIsNotClosedByTheCellsTheSectionsEdgeCuts) {
