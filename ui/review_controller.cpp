@@ -1,5 +1,7 @@
 #include "ui/review_controller.h"
 
+#include <algorithm>
+
 #include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
@@ -232,9 +234,12 @@ bool ReviewController::show_station(double station_m, QString* why_not) {
   if (review_map_->source != ctx_.source || profile_->map().stations.empty())
     return refuse(tr("no map of this input (Processing > Map tunnel first)"));
   const StationMap& map = profile_->map();
-  const double first = map.stations.front().station_m, last = map.stations.back().station_m;
+  // The map reaches its sections' ends (half a station beyond the first and last) and its plates.
+  double first = map.stations.front().station_m, last = map.stations.back().station_m;
+  if (!map.sections.empty()) first = std::min(first, map.sections.front().from_m), last = std::max(last, map.sections.back().to_m);
+  for (const Diaphragm& d : map.girder.diaphragms) first = std::min(first, d.station_m), last = std::max(last, d.station_m);
   if (station_m < first || station_m > last) {
-    const QString why = tr("station %1 m lies outside the map, whose stations run from %2 to %3 m")
+    const QString why = tr("station %1 m lies outside the map, which runs from %2 to %3 m")
                             .arg(station_m, 0, 'f', 2).arg(first, 0, 'f', 2).arg(last, 0, 'f', 2);
     ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
     return refuse(why);

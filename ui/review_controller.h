@@ -40,8 +40,9 @@ class ReviewController : public QObject {
   void map_tunnel();  // posed datasets: the station map, on the background job
   bool map_running() const { return map_running_; }
   // The frame that sees `station_m` best is shown, the cross-section cut there; false when the
-  // station lies outside the map, no frame sees it, or there is no map of this input, with the
-  // reason (one line, lower case) in `why_not` and on the status line.
+  // station lies outside the map (its sections and plates), no frame sees it, or there is no map
+  // of this input, with the reason (one line, lower case) in `why_not`; the first two also on
+  // the status line.
   bool show_station(double station_m, QString* why_not = nullptr);
   // Once `frame` is shown, the cut moves `ahead_m` in front of its camera (a session's cut).
   void cut_when_shown(int frame, std::optional<double> ahead_m);

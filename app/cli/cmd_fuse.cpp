@@ -19,6 +19,7 @@
 #include "core/io/dataset.h"
 #include "core/io/refined_dataset.h"
 #include "core/kinematics/robot_json.h"
+#include "core/mapping/mapping_notes.h"
 #include "core/report/pose_refinement_json.h"
 #include "core/report/station_map_json.h"
 #include "core/util/atomic_file.h"
@@ -240,6 +241,8 @@ void run(const FuseOptions& o, CliContext& ctx) {
                     join(c->degenerate).c_str());
       std::cout << "\n";
     }
+    for (const std::string& line : unchecked_pose_notes(r.refinement, r.stations.girder.unchecked_plates))
+      std::cout << line << "\n";
     if (!truth.empty()) {
       std::printf("mesh vs ground truth: %.2f %% of vertices within 10 mm (median %.1f mm, "
                   "p95 %.1f mm)\n", 100.0 * acc.fraction_within, acc.median_m * 1000.0,

@@ -58,6 +58,8 @@ int run_mesh(const render::RenderOptions& opt) {
 int run(const render::RenderOptions& opt) {
   if (opt.map) return render::run_station_map(opt);
   if (!opt.mesh.empty()) throw ParameterError("--mesh goes with --map (a mesh PLY alone is drawn as INPUT)");
+  if (opt.cutaway && !render::is_mesh_input(opt.in.input))
+    throw ParameterError("--cutaway opens a map (a map PLY, or --map); one frame's scene has none to open");
   if (render::is_mesh_input(opt.in.input)) return run_mesh(opt);
   auto source = open_input(opt.in.input, opt.in.read_options());
   RunSettings settings;  // parameters and camera up, as `detect` takes them

@@ -80,6 +80,14 @@ TunnelMap frame_of(const PlyMesh& mesh) {
   if (up.norm() < 0.5 && left.norm() > 1e-6) up = orthogonal_unit(axis.cross(left), axis);
   if (up.norm() < 0.5) up = orthogonal_unit(Eigen::Vector3d::UnitZ(), axis);
   if (up.norm() < 0.5) up = orthogonal_unit(Eigen::Vector3d::UnitY(), axis);
+  // With one side wall the axis's sign is the spread's: turn it so that the wall is on its side
+  // (the oblique camera stands above the right wall).
+  const bool only_left = walls.has(WallClass::Left) && !walls.has(WallClass::Right);
+  const bool only_right = walls.has(WallClass::Right) && !walls.has(WallClass::Left);
+  if (only_left || only_right) {
+    const Eigen::Vector3d towards = walls.at(only_left ? WallClass::Left : WallClass::Right) - centre;
+    if ((only_left ? 1.0 : -1.0) * up.cross(axis).dot(towards) < 0) axis = -axis;
+  }
   const Eigen::Vector3d side = up.cross(axis);
 
   TunnelMap frame;

@@ -45,7 +45,7 @@ struct Diaphragm {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // world frame, along the axis
   int seen_by_frames = 0;
   std::vector<int> frames;  // the frames that saw it, in order
-  double area_m2 = 0.0;  // plate area seen (5 cm cells, each edge cell counted half)
+  double area_m2 = 0.0;  // plate area seen: 5 cm cells, half a cell off per side with no covered neighbour
   bool closed = false;  // its views covered the section but for less than a manhole: no opening
   std::optional<Manhole> manhole;
   std::string manhole_reason;  // why there is no manhole
@@ -102,8 +102,8 @@ struct GirderStructure {
 bool view_lies_across_axis(const PlateView& view, double max_angle_deg);
 
 // The stations of the plates across the girder that frames saw (views grouped along the axis,
-// each group at least `min_plate_area_m2`), ascending: what a section's joint may hide behind,
-// known before the sections are.
+// each group at least `min_plate_area_m2` and seen by at least one view that is `checked`),
+// ascending: what a section's joint may hide behind, known before the sections are.
 std::vector<double> transverse_plate_stations(const std::vector<PlateView>& views,
                                               const GirderStructureOptions& options = {});
 

@@ -7,11 +7,9 @@
 
 namespace tunnelmap {
 
-namespace {
-
 // A pose off by metres maps its view where it claims, as a stretch no one else saw: nothing
 // checks it. Told only when other groups are checked (a walk nothing ties is reported as such).
-std::vector<std::string> unchecked_pose_lines(const PoseRefinement& refinement,
+std::vector<std::string> unchecked_pose_notes(const PoseRefinement& refinement,
                                               const std::vector<UncheckedPlate>& plates) {
   std::vector<std::string> lines;
   const std::vector<int> unchecked = frames_nothing_checks(refinement);
@@ -21,18 +19,24 @@ std::vector<std::string> unchecked_pose_lines(const PoseRefinement& refinement,
                        std::to_string(c.frames.back()) +
                        "): nothing it saw was seen from another pose, so nothing checks it; mapped where its pose "
                        "puts it";
+    std::vector<std::string> stations;
     for (const UncheckedPlate& p : plates)
       if (std::find_first_of(p.frames.begin(), p.frames.end(), c.frames.begin(), c.frames.end()) != p.frames.end()) {
-        char text[96];
-        std::snprintf(text, sizeof text, ", but for the plate it saw at station %.3f m, which is not mapped", p.station_m);
-        line += text;
+        char text[32];
+        std::snprintf(text, sizeof text, "%.3f", p.station_m);
+        stations.push_back(text);
       }
+    if (stations.size() == 1) line += ", but for the plate it saw at station " + stations[0] + " m, which is not mapped";
+    if (stations.size() > 1) {
+      line += ", but for the plates it saw at stations " + stations[0];
+      for (std::size_t i = 1; i < stations.size(); ++i) line += (i + 1 == stations.size() ? " and " : ", ") + stations[i];
+      line += " m, which are not mapped";
+    }
     lines.push_back(line);
   }
   return lines;
 }
 
-}  // namespace
 
 std::vector<std::string> MappingNotes::all() const {
   std::vector<std::string> lines = unchecked_poses;
@@ -43,7 +47,7 @@ std::vector<std::string> MappingNotes::all() const {
 MappingNotes mapping_notes(const MappedSequence& mapped, const std::vector<std::optional<Eigen::Vector3d>>& gravity,
                            const Eigen::Vector3d& world_up, double gravity_deg) {
   MappingNotes notes;
-  notes.unchecked_poses = unchecked_pose_lines(mapped.refinement, mapped.stations.girder.unchecked_plates);
+  notes.unchecked_poses = unchecked_pose_notes(mapped.refinement, mapped.stations.girder.unchecked_plates);
   if (mapped.refinement.ran)
     notes.gravity = gravity_noise_note(gravity_agreement(mapped.poses, gravity, world_up), gravity_deg);
   return notes;

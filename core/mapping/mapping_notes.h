@@ -18,6 +18,11 @@ struct MappingNotes {
   std::vector<std::string> all() const;
 };
 
+// One line per pose group that nothing checks while others are checked, naming the plates only
+// such poses saw (which the map leaves out); `map` notes these, `fuse` prints them.
+std::vector<std::string> unchecked_pose_notes(const PoseRefinement& refinement,
+                                              const std::vector<UncheckedPlate>& plates);
+
 // `gravity`: each frame's IMU gravity (camera frame), as the dataset gives it.
 MappingNotes mapping_notes(const MappedSequence& mapped, const std::vector<std::optional<Eigen::Vector3d>>& gravity,
                            const Eigen::Vector3d& world_up, double gravity_deg);

@@ -430,6 +430,11 @@ StationMapBuilder::Dims StationMapBuilder::station_dims(int station) const {
   return d;
 }
 
+void StationMapBuilder::set_unchecked_frames(std::vector<int> frames) {
+  std::sort(frames.begin(), frames.end());
+  unchecked_frames_ = std::move(frames);
+}
+
 void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, const Eigen::Isometry3d& T,
                                         PlateCheck check) {
   const int camera_node = line_.locate(T.translation()).node;

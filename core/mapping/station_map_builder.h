@@ -39,7 +39,7 @@ class StationMapBuilder {
 
   // Frames whose poses nothing checks (frames_nothing_checks): a plate only they saw is not
   // mapped but listed in the girder's `unchecked_plates`. Before their frames are added.
-  void set_unchecked_frames(std::vector<int> frames) { unchecked_frames_ = std::move(frames); }
+  void set_unchecked_frames(std::vector<int> frames);
 
   // The map of every frame added so far. `pose_groups[i]`: group of the i-th frame added.
   StationMap finish(const std::vector<int>& pose_groups) const;

@@ -575,10 +575,10 @@ class MapReviewTest : public QObject {
     QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));
     // A station past the map's end is refused with the map's extent, and the selection stays.
     QString why;
-    const double past = m.stations.back().station_m + 5.0;
-    QVERIFY(!w.show_station(past, &why));
-    const QString extent = QString("from %1 to %2 m").arg(m.stations.front().station_m, 0, 'f', 2)
-                               .arg(m.stations.back().station_m, 0, 'f', 2);
+    double first = m.sections.front().from_m, last = m.sections.back().to_m;
+    for (const auto& d : m.girder.diaphragms) first = std::min(first, d.station_m), last = std::max(last, d.station_m);
+    QVERIFY(!w.show_station(last + 5.0, &why));
+    const QString extent = QString("from %1 to %2 m").arg(first, 0, 'f', 2).arg(last, 0, 'f', 2);
     QVERIFY2(why.contains("outside the map") && why.contains(extent), qPrintable(why));
     QVERIFY2(w.status_text().contains(extent), qPrintable(w.status_text()));
     QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));

@@ -181,6 +181,12 @@ TEST(RenderMapPly, TheCutawayShowsThePlateInsideTheBox) {
   int red = 0, orange = 0;
   count_zone_colours(scene::load_png(dir + "/open.png"), red, orange);
   EXPECT_GT(red, 3000) << "the floor and the left wall should still show";
+  // One frame's scene has no map to open.
+  const RenderRun frame = render(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/sample/lab/depth/000000.png --cutaway",
+                                 dir + "/frame.png");
+  EXPECT_EQ(frame.status, 2) << frame.line;
+  EXPECT_NE(frame.line.find("--cutaway"), std::string::npos) << frame.line;
+  EXPECT_FALSE(fs::exists(dir + "/frame.png"));
   if (const char* dump = std::getenv("TUNNELMAP_UI_DUMP")) fs::copy_file(dir + "/open.png", std::string(dump) + "/map_cutaway.png", fs::copy_options::overwrite_existing);
 }
 
@@ -195,13 +201,15 @@ TEST(RenderMapPly, BadPlyIsExitThreeAndNoImage) {
 
 TEST(MapImage, RendersThroughTheRendererOrSaysWhyNot) {
   const std::string dir = fresh_dir("tunnelmap_map_image");
-  const std::string ply = write_map(dir);
+  const std::string ply = write_map_with_plate(dir);
   std::string why;
   EXPECT_TRUE(render_map_image_with(TUNNELMAP_RENDER_PATH, ply, dir + "/map.png", why)) << why;
   EXPECT_TRUE(why.empty()) << why;
   const scene::RgbImage img = scene::load_png(dir + "/map.png");
   EXPECT_EQ(img.width, 1600);
   EXPECT_EQ(img.height, 1000);
+  // The report's image looks into the box: its plate shows (6 times the pixels of a 640 px one).
+  EXPECT_GT(grey_pixels(img), 2000) << "the report's map image hides the plates";
 
   EXPECT_FALSE(render_map_image_with(dir + "/no-such-renderer", ply, dir + "/x.png", why));
   EXPECT_NE(why.find("no-such-renderer"), std::string::npos) << why;

@@ -23,8 +23,8 @@ void add_map_image(Document& doc, const std::string& png_path, const std::string
   const QFont caption_font = doc.font(7.5);
   const QString caption = QStringLiteral(
       "The map mesh as rendered by tunnelmap-render, its roof and right wall left out to show the inside: "
-      "traversable zones red, forbidden zones orange, plates grey with their manholes, each wall's "
-      "boundary a thin blue line.");
+      "traversable zones red, forbidden zones orange, plates grey with their manholes, the floor's and "
+      "the left wall's boundaries thin blue lines.");
   const double caption_h = doc.text_height(caption, caption_font, doc.width()) + doc.mm(1.0);
   const double gap = doc.mm(1.5);
   // Whole width, never taller than most of a page; on a page with less room left it shrinks to

@@ -35,6 +35,21 @@ TEST(MappingNotes, NamesEachPoseGroupNothingChecksWhenOthersAreChecked) {
   EXPECT_EQ(notes.all(), notes.unchecked_poses);
 }
 
+TEST(MappingNotes, NamesThePlatesOnlyAnUncheckedPoseSaw) {
+  const MappedSequence walk = walk_with_an_unchecked_stop();
+  const std::string head =
+      "pose 1 (frames 2-3): nothing it saw was seen from another pose, so nothing checks it; mapped where its pose "
+      "puts it";
+  // A plate frame 4 (a checked pose) saw is no business of pose 1's line.
+  const std::vector<std::string> one = unchecked_pose_notes(walk.refinement, {{14.5994, {3}}, {20.0, {4}}});
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0], head + ", but for the plate it saw at station 14.599 m, which is not mapped");
+  const std::vector<std::string> three =
+      unchecked_pose_notes(walk.refinement, {{14.5994, {3}}, {18.25, {2, 3}}, {22.0, {2}}});
+  ASSERT_EQ(three.size(), 1u);
+  EXPECT_EQ(three[0], head + ", but for the plates it saw at stations 14.599, 18.250 and 22.000 m, which are not mapped");
+}
+
 TEST(MappingNotes, AWalkNothingTiesOrThatWasNotRefinedHasNoSuchNote) {
   MappedSequence none_tied = walk_with_an_unchecked_stop();
   for (PoseCorrection& c : none_tied.refinement.groups) c.constrained.clear();
