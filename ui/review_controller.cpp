@@ -1,7 +1,5 @@
 #include "ui/review_controller.h"
 
-#include <algorithm>
-
 #include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
@@ -227,31 +225,21 @@ std::optional<ReviewController::MappedTunnel> ReviewController::mapped_tunnel() 
 }
 
 bool ReviewController::show_station(double station_m, QString* why_not) {
-  const auto refuse = [&](const QString& why) {
+  const auto refuse = [&](const QString& why, bool on_status) {
+    if (on_status) ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
     if (why_not) *why_not = why;
     return false;
   };
   if (review_map_->source != ctx_.source || profile_->map().stations.empty())
-    return refuse(tr("no map of this input (Processing > Map tunnel first)"));
+    return refuse(tr("no map of this input (Processing > Map tunnel first)"), false);
   const StationMap& map = profile_->map();
-  // The map reaches its sections' ends (half a station beyond the first and last) and its plates.
-  double first = map.stations.front().station_m, last = map.stations.back().station_m;
-  if (!map.sections.empty()) first = std::min(first, map.sections.front().from_m), last = std::max(last, map.sections.back().to_m);
-  for (const Diaphragm& d : map.girder.diaphragms) first = std::min(first, d.station_m), last = std::max(last, d.station_m);
-  if (station_m < first || station_m > last) {
-    const QString why = tr("station %1 m lies outside the map, which runs from %2 to %3 m")
-                            .arg(station_m, 0, 'f', 2).arg(first, 0, 'f', 2).arg(last, 0, 'f', 2);
-    ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
-    return refuse(why);
-  }
+  if (const MapExtent extent = map_extent(map); !extent.contains(station_m))
+    return refuse(tr("station %1 m lies outside the map, which runs from %2 to %3 m")
+                      .arg(station_m, 0, 'f', 2).arg(extent.from_m, 0, 'f', 2).arg(extent.to_m, 0, 'f', 2), true);
   const auto view = frame_for_station(map, review_map_->poses, review_map_->detected, station_m);
   profile_->set_current_station(station_m);
   sections_->select_station(station_m);
-  if (!view) {
-    const QString why = tr("no frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2);
-    ctx_.status->set_text(why.left(1).toUpper() + why.mid(1));
-    return refuse(why);
-  }
+  if (!view) return refuse(tr("no frame sees station %1 m from 0.5 to 4.5 m ahead").arg(station_m, 0, 'f', 2), true);
   cross_section_dock_->show();
   cross_section_dock_->raise();
   if (view->frame == frames_->frame_index() && frames_->current()) {

@@ -1,5 +1,7 @@
 #include "core/mapping/station_frames.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -22,6 +24,15 @@ std::optional<StationView> frame_for_station(const StationMap& map, const std::v
     if (cost < best_cost) best_cost = cost, best = StationView{static_cast<int>(i), ahead};
   }
   return best;
+}
+
+MapExtent map_extent(const StationMap& map) {
+  MapExtent e{map.stations.front().station_m, map.stations.back().station_m};
+  if (!map.sections.empty())
+    e.from_m = std::min(e.from_m, map.sections.front().from_m), e.to_m = std::max(e.to_m, map.sections.back().to_m);
+  for (const Diaphragm& d : map.girder.diaphragms)
+    e.from_m = std::min(e.from_m, d.station_m), e.to_m = std::max(e.to_m, d.station_m);
+  return e;
 }
 
 }  // namespace tunnelmap

@@ -16,6 +16,15 @@ struct StationView {
   double ahead_m = 0.0;   // the station's distance ahead of that frame's camera along the axis
 };
 
+// Where the map runs: from its first section's start to its last section's end (half a station
+// beyond the first and last), widened to any plate beyond them (such as an end wall seen ahead).
+// `map` must have stations.
+struct MapExtent {
+  double from_m = 0.0, to_m = 0.0;
+  bool contains(double station_m) const { return station_m >= from_m && station_m <= to_m; }
+};
+MapExtent map_extent(const StationMap& map);
+
 // `poses[i]`: camera-to-world of frame i (refined when the map was built with refined poses);
 // `detected[i]`: frame i found the tunnel (others are never chosen). Frames that see the station
 // between 0.5 m and `max_ahead_m` ahead are candidates; the one nearest `preferred_ahead_m` wins.

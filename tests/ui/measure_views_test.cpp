@@ -27,6 +27,7 @@
 #include "core/tunnel/tunnel_options.h"
 #include "ui/main_window.h"
 #include "core/mapping/rescan_stretches.h"
+#include "core/mapping/station_frames.h"
 #include "ui/map_sections_panel.h"
 #include "ui/parameter_panel.h"
 #include "ui/profile_plot.h"
@@ -575,10 +576,9 @@ class MapReviewTest : public QObject {
     QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));
     // A station past the map's end is refused with the map's extent, and the selection stays.
     QString why;
-    double first = m.sections.front().from_m, last = m.sections.back().to_m;
-    for (const auto& d : m.girder.diaphragms) first = std::min(first, d.station_m), last = std::max(last, d.station_m);
-    QVERIFY(!w.show_station(last + 5.0, &why));
-    const QString extent = QString("from %1 to %2 m").arg(first, 0, 'f', 2).arg(last, 0, 'f', 2);
+    const tunnelmap::MapExtent runs = tunnelmap::map_extent(m);
+    QVERIFY(!w.show_station(runs.to_m + 5.0, &why));
+    const QString extent = QString("from %1 to %2 m").arg(runs.from_m, 0, 'f', 2).arg(runs.to_m, 0, 'f', 2);
     QVERIFY2(why.contains("outside the map") && why.contains(extent), qPrintable(why));
     QVERIFY2(w.status_text().contains(extent), qPrintable(w.status_text()));
     QCOMPARE(sections->tree()->currentItem(), sections->tree()->topLevelItem(0)->child(0));

@@ -221,6 +221,17 @@ TEST(MapImage, RendersThroughTheRendererOrSaysWhyNot) {
   EXPECT_EQ(why.find('\n'), std::string::npos) << why;
   EXPECT_FALSE(fs::exists(dir + "/x.png"));
 
+  // A renderer that does not know an option the report passes (an older build): its parser's
+  // error, named after it, not its "--help" hint.
+  const std::string older = dir + "/older-render";
+  {
+    std::ofstream(older) << "#!/bin/sh\necho 'The following arguments were not expected: --cutaway' >&2\n"
+                            "echo 'Run with --help for more information.' >&2\nexit 109\n";
+  }
+  fs::permissions(older, fs::perms::owner_all);
+  EXPECT_FALSE(render_map_image_with(older, ply, dir + "/z.png", why));
+  EXPECT_EQ(why, older + ": The following arguments were not expected: --cutaway");
+
   // From a test executable there is no renderer beside it: a reason, not a crash.
   EXPECT_FALSE(render_map_image(ply, dir + "/y.png", why));
   EXPECT_FALSE(why.empty());

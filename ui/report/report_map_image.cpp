@@ -31,6 +31,20 @@ std::string last_line(const std::string& text) {
   return text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
+// The renderer's error line. A usage error (say, a renderer older than this report, without an
+// option it passes) ends with the command-line parser's hint, which says nothing: the line
+// before it does, named after the renderer.
+std::string error_line(std::string text, const std::string& renderer) {
+  static const std::string kHint = "Run with --help for more information.";
+  std::string line = last_line(text);
+  if (line == kHint) {
+    text.erase(text.rfind(kHint));
+    line = last_line(text);
+    if (!line.empty()) line = renderer + ": " + line;
+  }
+  return line;
+}
+
 // Reads `fd` to its end (keeping the last kMaxErrorBytes) and closes it.
 std::string drain(int fd) {
   std::string out;
@@ -89,7 +103,7 @@ bool render_map_image_with(const std::string& renderer, const std::string& map_p
       return false;
     }
   }
-  const std::string said = last_line(errors);
+  const std::string said = error_line(errors, renderer);
   if (WIFSIGNALED(status)) {
     why_not = "tunnelmap-render was killed by signal " + std::to_string(WTERMSIG(status)) +
               (said.empty() ? "" : " (" + said + ")");

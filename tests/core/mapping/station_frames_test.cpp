@@ -57,5 +57,24 @@ TEST(StationFrames, ACameraLookingBackSeesStationsBehindIt) {
   EXPECT_FALSE(frame_for_station(m, poses, {true}, 6.0).has_value());  // behind its back
 }
 
+TEST(StationFrames, TheMapRunsToItsSectionsEndsAndItsPlates) {
+  StationMap m;
+  for (int k = 0; k < 30; ++k) m.stations.push_back(Station{});
+  for (int k = 0; k < 30; ++k) m.stations[k].station_m = 0.75 + 0.1 * k;  // 0.75 .. 3.65
+  m.sections = {{0.7, 2.0, 0.9, 1.2}, {2.0, 3.7, 0.8, 1.1}};
+  MapExtent e = map_extent(m);
+  EXPECT_DOUBLE_EQ(e.from_m, 0.7);
+  EXPECT_DOUBLE_EQ(e.to_m, 3.7);  // half a station past the last one
+  EXPECT_TRUE(e.contains(3.69));
+  EXPECT_FALSE(e.contains(3.71));
+  Diaphragm end_wall;
+  end_wall.station_m = 4.2;  // seen ahead, beyond the stations
+  m.girder.diaphragms.push_back(end_wall);
+  e = map_extent(m);
+  EXPECT_DOUBLE_EQ(e.to_m, 4.2);
+  EXPECT_TRUE(e.contains(4.0));
+  EXPECT_FALSE(e.contains(0.6));
+}
+
 }  // namespace
 }  // namespace tunnelmap
