@@ -39,6 +39,7 @@ struct EvaluateOptions {
   int count = 30;
   std::optional<double> min_length, max_length;
   std::optional<double> curved_fraction, drifted_fraction, min_radius, max_radius, imu_gravity_deg;
+  std::optional<double> look_back_fraction;
   std::optional<double> transition_fraction, vertical_curve_fraction;
   std::vector<int> girders;  // --girder: run only these of the family
   bool keep_datasets = false;
@@ -93,7 +94,7 @@ std::string protocol_text(const EvaluateOptions& o, const ProtocolOptions& p) {
 }
 
 // --curved-fraction, --transition-fraction, --vertical-curve-fraction, --drifted-fraction,
-// --min-radius, --max-radius into the family's ranges.
+// --look-back-fraction, --min-radius, --max-radius into the family's ranges.
 void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
   auto fraction = [](const std::optional<double>& value, const char* flag, double& into) {
     if (!value) return;
@@ -104,6 +105,7 @@ void set_alignment_and_drift(const EvaluateOptions& o, GirderRanges& r) {
   fraction(o.transition_fraction, "--transition-fraction", r.transition_fraction);
   fraction(o.vertical_curve_fraction, "--vertical-curve-fraction", r.vertical_curve_fraction);
   fraction(o.drifted_fraction, "--drifted-fraction", r.drifted_fraction);
+  fraction(o.look_back_fraction, "--look-back-fraction", r.look_back_fraction);
   if (o.imu_gravity_deg) {
     if (!(*o.imu_gravity_deg > 0.0 && *o.imu_gravity_deg <= 10.0))
       throw ParameterError("evaluate: --imu-gravity-deg must be in (0, 10]");
@@ -279,6 +281,7 @@ void add_evaluate_command(CLI::App& app, CliContext& ctx) {
   cmd->add_option("--transition-fraction", o.transition_fraction, "Share of the curved girders that run straight and then into their curve along a transition curve that starts inside the girder, 0-1 (default 0.5)");
   cmd->add_option("--vertical-curve-fraction", o.vertical_curve_fraction, "Share of the curved girders on a vertical curve (a crest or a sag: the gradient changes along the girder), 0-1 (default 0.5)");
   cmd->add_option("--drifted-fraction", o.drifted_fraction, "Share of walks whose poses drift, 0-1 (default 0.5)");
+  cmd->add_option("--look-back-fraction", o.look_back_fraction, "Share of walks whose camera turns round once per compartment past a plate to look back (simulate --look-back), 0-1 (default 0); drawn apart, so the girders are the same whatever it is");
   cmd->add_option("--imu-gravity-deg", o.imu_gravity_deg, "Every walk carries an IMU's gravity per frame, tilted by this much (degrees, 1 sigma); default none");
   cmd->add_option("--min-radius", o.min_radius, "Tightest curve radius drawn, metres (default 150)");
   cmd->add_option("--max-radius", o.max_radius, "Widest curve radius drawn, metres (default 1000)");

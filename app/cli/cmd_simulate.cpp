@@ -37,6 +37,7 @@ struct SimulateOptions {
   std::optional<double> vertical_radius;
   std::optional<std::string> manhole;  // SHAPE,W,H,CENTRE_Z_REL[,CORNER_R]
   std::optional<std::string> stiffeners, stiffener_size;  // WALL:POS,...; H,T
+  bool look_back = false;  // the walk turns round once per compartment
   bool quiet = false;
 };
 
@@ -211,6 +212,8 @@ void apply_layout(const SimulateOptions& o, SimConfig& c) {
     w.through_openings = o.girder.has_value();
     c.walk = w;
   }
+  if (o.look_back && !c.walk) refuse("--look-back needs --walk or --girder");
+  if (o.look_back) c.walk->look_back = true;
 }
 
 void run(const SimulateOptions& o, CliContext& ctx) {
@@ -306,6 +309,9 @@ void add_simulate_command(CLI::App& app, CliContext& ctx) {
                   "Walk the camera along the tunnel: FROM,TO,STOPS (metres, stations)");
   sub->add_option("--walk-pose", opt->walk_pose,
                   "Camera pose at every walk station: Y_REL,Z_REL,PITCH_DEG (default 0,0.5,0)");
+  sub->add_flag("--look-back", opt->look_back,
+               "With --walk or --girder: the stop nearest the middle of each compartment past a "
+               "plate looks back along the girder (sees the stretch the plate hid)");
   sub->add_option("--imu,--imu-gravity-deg", opt->imu,
                   "An IMU on the camera: each frame's \"gravity\" (where things fall, camera frame), "
                   "tilted by DEG degrees (1 sigma) about each axis across it; drift does not reach it");

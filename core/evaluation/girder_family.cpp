@@ -70,6 +70,7 @@ void draw_alignment_changes(Draw& d, const GirderRanges& r, double length, SimCo
 std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRanges& r) {
   Draw d(seed);
   Draw alignment_changes(seed ^ 0x5bd1e995u);
+  Draw look_backs(seed ^ 0x27d4eb2fu);
   std::vector<GirderDraw> out;
   for (int i = 0; i < count; ++i) {
     GirderDraw g;
@@ -109,6 +110,7 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
     walk.stops = std::max(2, static_cast<int>(std::lround((walk.end_x_m - walk.start_x_m) / stop)) + 1);
     walk.pose = {d.uniform(-0.1, 0.1), d.uniform(0.4, 0.6), 0.0, d.uniform(-4, 4), d.uniform(-4, 4)};
     walk.through_openings = true;
+    walk.look_back = look_backs.chance(r.look_back_fraction);
     c.walk = walk;
     c.frames = walk.stops * r.frames_per_stop;
     std::string alignment;
@@ -127,6 +129,7 @@ std::vector<GirderDraw> draw_girders(int count, unsigned seed, const GirderRange
                   c.manhole_height_m, alignment.c_str(),
                   g.drifted ? "drift" : "exact poses");
     g.summary = buf;
+    if (walk.look_back) g.summary += ", looks back";
     if (c.imu_gravity_deg > 0.0) g.summary += ", IMU";
     out.push_back(std::move(g));
   }

@@ -31,6 +31,9 @@ struct GirderRanges {
   // Above 0: every walk carries an IMU's gravity per frame, this good (SimConfig::imu_gravity_deg).
   // It draws nothing: the girders are the same with it or without.
   double imu_gravity_deg = 0.0;
+  // Walks that turn the camera round once per compartment past a plate (SimWalk::look_back).
+  // Drawn from a stream of their own: the girders are the same whatever this is.
+  double look_back_fraction = 0.0;
   double min_stop_spacing_m = 0.5, max_stop_spacing_m = 0.8;
   int frames_per_stop = 2;
 };

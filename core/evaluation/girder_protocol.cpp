@@ -205,6 +205,7 @@ nlohmann::json girders_json(const std::vector<GirderResult>& results, const Gird
             {"drifted_fraction", r.drifted_fraction},
             {"drift", {{"translation_mm_per_sqrt_m", r.drift_translation_mm_per_sqrt_m},
                        {"rotation_deg_per_sqrt_m", r.drift_rotation_deg_per_sqrt_m}}},
+            {"look_back_fraction", r.look_back_fraction},
             {"stop_spacing_m", {r.min_stop_spacing_m, r.max_stop_spacing_m}}}},
           {"only", o.only.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.only)},
           {"girders", girders},

@@ -35,11 +35,16 @@ struct SimSection {
 // With `through_openings`, the camera follows the manholes near every plate: within 0.5 m of a
 // plate's station it is at the opening's centre (y = 0, z = the opening's centre height),
 // from 1.5 m on at `pose`, blended smoothly in between (docs/simulator.md#long-girders).
+// With `look_back`, the stop nearest the middle of each compartment after a plate (between two
+// plates, or the last plate and the walk's end) turns the camera round to look back along the
+// girder: the stretch just past a plate is hidden by the plate from the frames before it and
+// lies below the field of view of those just past it, and only a look back sees it.
 struct SimWalk {
   double start_x_m = 0.0, end_x_m = 2.0;
   int stops = 5;
   SimCameraPose pose;
   bool through_openings = false;
+  bool look_back = false;
 };
 
 // A longitudinal stiffener: a flat bar along a wall (docs/simulator.md#longitudinal-stiffeners)

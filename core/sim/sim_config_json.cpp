@@ -103,6 +103,7 @@ json sim_config_to_json(const SimConfig& c) {
     j["walk"] = {{"start_x_m", c.walk->start_x_m}, {"end_x_m", c.walk->end_x_m},
                  {"stops", c.walk->stops}, {"pose", pose_to_json(c.walk->pose)}};
     if (c.walk->through_openings) j["walk"]["through_openings"] = true;
+    if (c.walk->look_back) j["walk"]["look_back"] = true;
   }
   j["jitter_translation_m"] = c.jitter_translation_m;
   j["jitter_rotation_deg"] = c.jitter_rotation_deg;
@@ -245,6 +246,7 @@ SimConfig sim_config_from_json(const json& j, const std::string& source) {
       read(w, "stops", walk.stops);
       if (w.contains("pose")) walk.pose = read_pose(w.at("pose"));
       read(w, "through_openings", walk.through_openings);
+      read(w, "look_back", walk.look_back);
       c.walk = walk;
     }
     read(j, "jitter_translation_m", c.jitter_translation_m);

@@ -49,4 +49,23 @@ double opening_weight(double d) {
   return u * u * (3.0 - 2.0 * u);
 }
 
+std::vector<bool> look_back_stops(const std::vector<double>& stop_x, const std::vector<double>& plates_x) {
+  std::vector<bool> back(stop_x.size(), false);
+  if (stop_x.empty()) return back;
+  for (std::size_t k = 0; k < plates_x.size(); ++k) {
+    const double from = plates_x[k];
+    const bool last = k + 1 == plates_x.size();  // ends at the last stop, which may look back
+    const double to = last ? stop_x.back() : plates_x[k + 1];
+    if (to <= from) continue;
+    const double middle = 0.5 * (from + to);
+    std::size_t nearest = stop_x.size();
+    for (std::size_t g = 0; g < stop_x.size(); ++g)
+      if (stop_x[g] > from && (stop_x[g] < to || (last && stop_x[g] == to)) &&
+          (nearest == stop_x.size() || std::abs(stop_x[g] - middle) < std::abs(stop_x[nearest] - middle)))
+        nearest = g;
+    if (nearest < stop_x.size()) back[nearest] = true;
+  }
+  return back;
+}
+
 }  // namespace tunnelmap::sim

@@ -35,4 +35,9 @@ inline double opening_centre_z(const SimConfig& config, double section_height_m)
 // `distance_m` from the nearest plate: 1 within 0.5 m, 0 from 1.5 m, smoothstep between.
 double opening_weight(double distance_m);
 
+// Which of a walk's stops (stations `stop_x`, ascending) look back (SimWalk::look_back): in each
+// compartment that starts at a plate of `plates_x` (ascending) and ends at the next plate or
+// at the last stop, the stop nearest its middle. A compartment no stop stands in has none.
+std::vector<bool> look_back_stops(const std::vector<double>& stop_x, const std::vector<double>& plates_x);
+
 }  // namespace tunnelmap::sim

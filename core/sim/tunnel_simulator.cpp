@@ -59,6 +59,11 @@ TunnelSimulator::TunnelSimulator(SimConfig config)
   groups_ = config_.walk
                 ? config_.walk->stops
                 : std::max(static_cast<int>(config_.poses.size()), distance_count(config_));
+  if (config_.walk && config_.walk->look_back) {
+    std::vector<double> stop_x;
+    for (int g = 0; g < groups_; ++g) stop_x.push_back(group_x(g));
+    looks_back_ = sim::look_back_stops(stop_x, plates_x_);
+  }
   if (config_.has_drift()) make_drift();
 }
 
@@ -193,7 +198,7 @@ Eigen::Isometry3d TunnelSimulator::group_pose(int g, const double j[6]) const {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = camera_rotation(p.roll_deg + config_.roll_deg + j[3],
                                p.pitch_deg + config_.pitch_deg + j[4],
-                               p.yaw_deg + config_.yaw_deg + j[5]);
+                               p.yaw_deg + config_.yaw_deg + j[5] + (looks_back(g) ? 180.0 : 0.0));
   // Relative to the cross-section of the section the station is in.
   if (config_.walk && config_.walk->through_openings && !plates_x_.empty()) {
     // Towards the opening's centre near a plate (sim_girder.h).

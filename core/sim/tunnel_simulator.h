@@ -62,6 +62,8 @@ class TunnelSimulator {
   int pose_group(int index) const;          // contiguous blocks of frames
   // Nominal camera X of a pose group (a walk's station), before jitter.
   double group_x(int group) const;
+  // The group's camera looks back along the girder (SimWalk::look_back).
+  bool looks_back(int group) const { return !looks_back_.empty() && looks_back_.at(group); }
   // Without a walk: the group's distance; with one: the plate's distance from the frame's
   // station, when the station is in front of the plate.
   std::optional<double> distance_to_manhole(int index) const;
@@ -103,6 +105,7 @@ class TunnelSimulator {
   sim::TunnelGeometry geometry_;
   int groups_ = 1;
   std::vector<double> plates_x_;    // diaphragms_x()
+  std::vector<bool> looks_back_;    // per group: turned round (SimWalk::look_back)
   std::vector<SimDrift> drift_;     // per group; empty without drift
   std::vector<double> travelled_;   // per group; empty without drift
 };

@@ -21,6 +21,7 @@
 #include "core/sim/sensor_model.h"
 #include "core/sim/sim_config_json.h"
 #include "core/sim/sim_dataset_writer.h"
+#include "core/sim/sim_girder.h"
 #include "core/sim/tunnel_simulator.h"
 #include "core/util/build_paths.h"
 #include "core/util/error.h"
@@ -405,6 +406,57 @@ TEST(SimGirderTest, WalkThroughTheManholesCentresTheCameraOnEachPlate) {
   EXPECT_GT(free, 4);
 }
 
+TEST(SimGirderTest, TheStopNearestEachCompartmentsMiddlePastAPlateLooksBack) {
+  // Stops every 0.5 m from 0.5 to 11.5; plates at 4 and 8: compartments 4-8 and 8-11.5 (the
+  // last stop ends the last one). The first compartment is seen looking ahead.
+  std::vector<double> stops;
+  for (int g = 0; g <= 22; ++g) stops.push_back(0.5 + 0.5 * g);
+  const std::vector<bool> back = sim::look_back_stops(stops, {4.0, 8.0});
+  std::vector<double> back_x;
+  for (std::size_t g = 0; g < stops.size(); ++g)
+    if (back[g]) back_x.push_back(stops[g]);
+  EXPECT_EQ(back_x, (std::vector<double>{6.0, 9.5}));  // 9.5 and 10 are as near 9.75: the first
+  // A compartment no stop stands in has none; the last stop may look back; no plates, none.
+  EXPECT_EQ(sim::look_back_stops({1.0, 2.0, 9.0}, {4.0, 8.0}), (std::vector<bool>{false, false, true}));
+  EXPECT_EQ(sim::look_back_stops(stops, {}), std::vector<bool>(stops.size(), false));
+}
+
+TEST(SimGirderTest, ALookBackStopSeesThePlateItClimbedThroughAndTheWallsJustPastIt) {
+  SimConfig c = testing::girder_walk_config(12.0, 4.0, 23);
+  c.walk->look_back = true;
+  c.jitter_translation_m = 0.0;
+  c.jitter_rotation_deg = 0.0;
+  const TunnelSimulator sim(c);
+  int looked_back = 0;
+  for (int i = 0; i < sim.frame_count(); ++i) {
+    const double x = sim.group_x(sim.pose_group(i));
+    const Eigen::Vector3d view = sim.pose(i).linear().col(2);  // the camera's optical axis
+    if (!sim.looks_back(sim.pose_group(i))) {
+      EXPECT_GT(view.x(), 0.99) << x;
+      continue;
+    }
+    ++looked_back;
+    EXPECT_LT(view.x(), -0.99) << x;
+    // It sees the plate behind it and the walls up to that plate.
+    const SimFrame f = sim.render(i);
+    const double plate = x < 8.0 ? 4.0 : 8.0;
+    double nearest_wall_x = 1e9;
+    int plate_pixels = 0;
+    for (int v = 0; v < f.frame.height; ++v)
+      for (int u = 0; u < f.frame.width; ++u) {
+        const SimSurface* s = sim.surface(f.surface_id[static_cast<std::size_t>(v) * f.frame.width + u]);
+        if (!s || f.frame.depth_m(u, v) <= 0.0f) continue;
+        const Eigen::Vector3d w =
+            sim.pose(i) * f.frame.intrinsics.backproject(u, v, f.frame.depth_m(u, v)).cast<double>();
+        if (s->wall == "diaphragm" && std::abs(w.x() - plate) < 0.05) ++plate_pixels;
+        if (s->wall == "left" || s->wall == "right") nearest_wall_x = std::min(nearest_wall_x, w.x());
+      }
+    EXPECT_GT(plate_pixels, 10000) << x;
+    EXPECT_LT(nearest_wall_x, plate + 0.6) << x;  // the forward frames start about 1 m past it
+  }
+  EXPECT_EQ(looked_back, 2);  // the stops at 6 m and 9.5 m
+}
+
 // ---------------------------------------------------------------------------------------------
 // Ground truth of the girder
 
@@ -689,7 +741,7 @@ TEST(SimGirderTest, CliGirderFlags) {
                             " --preset field --girder 12 --diaphragm-spacing 4 --frames 3"
                             " --manhole rounded_rectangle,0.5,0.7,0.45,0.1 --curve-radius -150"
                             " --gradient-pct 4 --cross-fall-deg 2 --drift 6,0.12 --transition 3,5"
-                            " --vertical-radius -2000 --quiet",
+                            " --vertical-radius -2000 --look-back --quiet",
                         err),
             0)
       << err;
@@ -707,6 +759,7 @@ TEST(SimGirderTest, CliGirderFlags) {
   EXPECT_EQ(j.at("ground_truth").at("girder").at("vertical_radius_m").get<double>(), -2000.0);
   EXPECT_EQ(sim.at("walk").at("stops"), 3);
   EXPECT_EQ(sim.at("walk").at("through_openings"), true);
+  EXPECT_EQ(sim.at("walk").at("look_back"), true);
   EXPECT_EQ(j.at("ground_truth").at("girder").at("diaphragms").size(), 2u);
   // A right-hand curve: the centreline ends at negative y.
   EXPECT_LT(j.at("ground_truth").at("girder").at("centreline").back().at("point")[1].get<double>(), -0.1);
@@ -730,6 +783,7 @@ TEST(SimGirderTest, CliGirderFlags) {
       {"--curve-radius 150 --transition 3,-5", "--transition"},
       {"--curve-radius 150 --transition 3,0", "--transition"},
       {"--vertical-radius 50", "--vertical-radius"},
+      {"--look-back", "--look-back"},
   };
   for (const auto& [args, flag] : bad) {
     EXPECT_EQ(run_cli_err("simulate " + dir.string() + " " + args, err), 2) << args;
