@@ -3,6 +3,7 @@
 #include "core/fusion/fusion_options.h"
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/map_options.h"
+#include "core/mapping/walk_facing.h"
 
 namespace tunnelmap {
 
@@ -27,8 +28,12 @@ std::optional<Eigen::Isometry3d> FrameContext::apply(int index, FrameResult& res
   if (pose) {
     FrameWalls walls;
     extract_frame_walls(result, walls);  // a frame with no cross-section may still see a plate
+    // Mapped facing along the walk; the frame's own result keeps its own view.
+    const bool looks_back = facing_.looks_back(result.map, pose->linear());
+    if (looks_back) turn_round(result.map, walls);
     const Eigen::Isometry3d mapped_with = slam_ ? localise(result.map, walls, *pose, gravity) : *pose;
     stations_.add_frame(index, result.map, walls, mapped_with);
+    if (looks_back) turn_round(result.map, walls);
     return mapped_with;
   }
   apply_tunnel_context(result.map, tunnel_, recent_);

@@ -9,6 +9,7 @@
 
 #include "core/mapping/station_map_builder.h"
 #include "core/mapping/structure_slam.h"
+#include "core/mapping/walk_facing.h"
 #include "core/pipeline/pipeline.h"
 #include "core/tunnel/tunnel_detector.h"
 
@@ -37,6 +38,7 @@ class FrameContext {
   TunnelOptions tunnel_;
   TunnelContext recent_;
   StationMapBuilder stations_;
+  WalkFacing facing_;
   std::optional<StructureSlam> slam_;  // with slam.localise
   double pose_group_m_ = 0.0;
   int group_ = -1;

@@ -12,14 +12,33 @@
 
 namespace tunnelmap::testing {
 
-StationMap map_simulated_girder(const SimConfig& girder) {
+namespace {
+
+// The girder's dataset, written and read back, and its mapping.
+struct MappedDataset {
+  Dataset dataset;
+  DatasetMapping mapping;
+};
+
+MappedDataset map_girder_dataset(const SimConfig& girder) {
   IoTempDir tmp;
   write_sim_dataset(tmp.file("girder"), girder);
-  const Dataset ds = read_dataset(tmp.file("girder"));
+  MappedDataset out;
+  out.dataset = read_dataset(tmp.file("girder"));
   Parameters params;
   params.load_json_file(std::string(TUNNELMAP_TEST_DATA_DIR) + "/presets/field.json");
   Pipeline pipeline(params);
-  return map_dataset(ds, pipeline, true).mapped.stations;
+  out.mapping = map_dataset(out.dataset, pipeline, true);
+  return out;
+}
+
+}  // namespace
+
+StationMap map_simulated_girder(const SimConfig& girder) { return map_girder_dataset(girder).mapping.mapped.stations; }
+
+GirderScore score_simulated_girder(const SimConfig& girder) {
+  const MappedDataset m = map_girder_dataset(girder);
+  return score_girder(m.mapping, m.dataset.ground_truth, m.dataset.raw["frames"]);
 }
 
 }  // namespace tunnelmap::testing
