@@ -11,7 +11,8 @@ bool operator==(const StationMapOptions& a, const StationMapOptions& b) {
          a.zone_gap_m == b.zone_gap_m && a.max_symmetric_step_m == b.max_symmetric_step_m &&
          a.min_support_points == b.min_support_points && a.near_range_m == b.near_range_m &&
          a.per_frame_sizes == b.per_frame_sizes && a.follow_centreline == b.follow_centreline &&
-         a.centreline_window_m == b.centreline_window_m && a.centreline_node_m == b.centreline_node_m;
+         a.centreline_window_m == b.centreline_window_m && a.centreline_node_m == b.centreline_node_m &&
+         a.cloud_max_range_m == b.cloud_max_range_m && a.point_sigma_m == b.point_sigma_m;
 }
 
 StationMapOptions station_map_options(const Parameters& p) {
@@ -30,6 +31,8 @@ StationMapOptions station_map_options(const Parameters& p) {
   o.follow_centreline = p.get(map_keys::follow_centreline);
   o.centreline_window_m = p.get(map_keys::centreline_window_m);
   o.centreline_node_m = p.get(map_keys::centreline_node_m);
+  o.cloud_max_range_m = p.get(cloud_keys::max_range_m);
+  o.point_sigma_m = mm_to_m(p.get(slam_keys::point_sigma_mm));
   return o;
 }
 

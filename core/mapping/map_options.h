@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "core/mapping/slam_options.h"
+#include "core/normals/cloud_options.h"
 #include "core/params/parameter_key.h"
 #include "core/tunnel/tunnel_options.h"
 
@@ -86,6 +88,10 @@ struct StationMapOptions {
   bool follow_centreline = map_keys::follow_centreline.default_value;
   double centreline_window_m = map_keys::centreline_window_m.default_value;
   double centreline_node_m = map_keys::centreline_node_m.default_value;
+  // A plate's view that the cloud's range cut is too near (plates_cut_by_range): the range
+  // and the depth's noise at 1 m, as localisation takes them.
+  double cloud_max_range_m = cloud_keys::max_range_m.default_value;
+  double point_sigma_m = mm_to_m(slam_keys::point_sigma_mm.default_value);
 };
 bool operator==(const StationMapOptions& a, const StationMapOptions& b);
 inline bool operator!=(const StationMapOptions& a, const StationMapOptions& b) { return !(a == b); }

@@ -35,10 +35,21 @@ struct Moments {
 // deviations of its pixels' noise inside the range (the bias is then below 1 % of it).
 constexpr double kRangeMarginSigmas = 3.0;
 
+bool cut_by_range(double max_depth_m, double pixel_sigma_m, double cloud_max_range_m) {
+  return max_depth_m + kRangeMarginSigmas * pixel_sigma_m > cloud_max_range_m;
+}
+
 // The scatter of one pixel of a patch about its plane, from its blocks' means (a block mean of n
 // pixels scatters by sigma / sqrt(n)).
 double pixel_scatter_m(const Moments& m, double normal_variance) {
   return m.blocks > 0 ? std::sqrt(std::max(0.0, normal_variance) * m.weight / m.blocks) : 0.0;
+}
+
+// One pixel's noise: the sensor model at the patch's farthest depth, or its scatter if larger
+// (the segmentation keeps the pixels near each plane, so the scatter alone falls short of the
+// noise on far plates).
+double pixel_sigma_m(const Moments& m, double scatter_m, double point_sigma_m) {
+  return std::max(scatter_m, point_sigma_m * m.max_depth_m * m.max_depth_m);
 }
 
 // What a patch keeps of the depth's quantisation. The noise that comes before the rounding
@@ -83,11 +94,8 @@ bool reduce(const Moments& m, const SlamOptions& o, FramePatch& out) {
   const double z = out.centroid.norm();
   const double growth = std::max(1.0, z * z);
   const double point_sigma = o.point_sigma_m * growth, floor = o.patch_floor_m * growth;
-  // One pixel's noise: the sensor model at its depth, or its scatter if larger (the
-  // segmentation keeps the pixels near each plane, so the scatter alone falls short of the
-  // noise on far plates).
   const double scatter = pixel_scatter_m(m, eig.eigenvalues()[0]);
-  out.pixel_sigma_m = std::max(scatter, o.point_sigma_m * m.max_depth_m * m.max_depth_m);
+  out.pixel_sigma_m = pixel_sigma_m(m, scatter, o.point_sigma_m);
   const double step = quantisation_sigma_m(o.depth_step_m * z * z, scatter, cov);
   out.sigma_m = std::sqrt(point_sigma * point_sigma / m.weight + floor * floor + step * step);
   return true;
@@ -190,6 +198,20 @@ std::vector<FramePatch> frame_wall_patches(const TunnelMap& map, const FrameWall
   return out;
 }
 
+std::vector<int> plates_cut_by_range(const FrameWalls& walls, double cloud_max_range_m, double point_sigma_m) {
+  std::map<int, Moments> plates;  // plane id
+  for (const WallSample& s : walls.samples)
+    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
+  std::vector<int> cut;
+  for (const auto& [plane, m] : plates) {
+    const Eigen::Vector3d centroid = m.sum / m.weight;
+    const Eigen::Matrix3d cov = m.outer / m.weight - centroid * centroid.transpose();
+    const double scatter = pixel_scatter_m(m, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues()[0]);
+    if (cut_by_range(m.max_depth_m, pixel_sigma_m(m, scatter, point_sigma_m), cloud_max_range_m)) cut.push_back(plane);
+  }
+  return cut;
+}
+
 std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
                                             const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
   const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
@@ -201,7 +223,7 @@ std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWal
   for (const auto& [plane, m] : plates) {
     FramePatch patch;
     if (!reduce(m, o, patch) || patch.centroid.z() > o.max_plate_depth_m) continue;
-    if (m.max_depth_m + kRangeMarginSigmas * patch.pixel_sigma_m > o.cloud_max_range_m) continue;
+    if (cut_by_range(m.max_depth_m, patch.pixel_sigma_m, o.cloud_max_range_m)) continue;
     if (!map.detected && std::abs(patch.normal.dot(axis_cam)) < cos_transverse) continue;
     patch.plate = true;
     patch.wall = kTransverseSample;

@@ -38,6 +38,13 @@ struct FramePatch {
 std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
                                             const Eigen::Vector3d& axis_cam, const SlamOptions& options);
 
+// The planes across the axis (kTransverseSample) of `walls` whose view the cloud's range cut:
+// depth beyond `cloud_max_range_m` is dropped pixel by pixel, so such a plate keeps only the
+// pixels its noise brought nearer and comes out too near. A view is cut unless its farthest
+// block lies kRangeMarginSigmas of one pixel's noise (its scatter, or `point_sigma_m` at 1 m
+// growing with z^2, whichever is larger) inside the range. Plane ids, ascending.
+std::vector<int> plates_cut_by_range(const FrameWalls& walls, double cloud_max_range_m, double point_sigma_m);
+
 // The frame's walls, cut into the bands of `grid`. A wall's zones (edge band, middle plate) are
 // patches of their own: each is a layer of the wall's landmark (StructureSlam).
 std::vector<FramePatch> frame_wall_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,

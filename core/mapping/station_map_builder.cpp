@@ -10,6 +10,7 @@
 #include "core/mapping/end_wall_trim.h"
 #include "core/mapping/frame_walls.h"
 #include "core/mapping/section_evidence.h"
+#include "core/mapping/slam_patches.h"
 #include "core/mapping/station_sections.h"
 #include "core/tunnel/tunnel_detector.h"
 #include "core/tunnel/wall_geometry.h"
@@ -442,9 +443,11 @@ void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, cons
     const LinePosition at = line_.locate(T * camera_point.cast<double>(), camera_node);
     return Eigen::Vector3d(at.station_m, at.lateral_m, at.vertical_m);
   };
+  // A view the cloud's range cut places its plate too near; nearer views place it.
+  const std::vector<int> cut = plates_cut_by_range(walls, options_.cloud_max_range_m, options_.point_sigma_m);
   std::map<int, PlateView> by_plane;
   for (const WallSample& s : walls.samples) {
-    if (s.wall != kTransverseSample) continue;
+    if (s.wall != kTransverseSample || std::binary_search(cut.begin(), cut.end(), s.plane)) continue;
     PlateView& v = by_plane[s.plane];
     v.frame = frame;
     v.checked = !std::binary_search(unchecked_frames_.begin(), unchecked_frames_.end(), frame);

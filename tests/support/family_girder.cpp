@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "core/evaluation/girder_family.h"
 #include "core/util/build_paths.h"
 
 namespace tunnelmap::testing {
@@ -17,9 +16,9 @@ Parameters field_preset() {
 
 }  // namespace
 
-FamilyGirder::FamilyGirder(unsigned seed, int index)
+FamilyGirder::FamilyGirder(unsigned seed, int index, const GirderRanges& ranges)
     : params_(field_preset()),
-      config_(draw_girders(30, seed)[static_cast<std::size_t>(index)].config),
+      config_(draw_girders(30, seed, ranges)[static_cast<std::size_t>(index)].config),
       sim_(config_),
       pipeline_(params_) {}
 

@@ -89,6 +89,25 @@ TEST(SlamPatches, NoiseBeforeTheRoundingAveragesTheStepsAway) {
   }
 }
 
+TEST(SlamPatches, APlateTheRangeCutIsLeftOutOfTheGraphAndOfTheStationMapAlike) {
+  // Depth beyond 5 m is dropped pixel by pixel: a plate at 4.9 m with 36 mm of noise per pixel
+  // keeps its nearer pixels and comes out too near. At 4 m (24 mm) its farthest block lies
+  // three sigmas inside the range.
+  std::mt19937 rng(5);
+  SlamOptions o;
+  o.cloud_max_range_m = 5.0;
+  FrameWalls walls = plate_at(4.0, 0.0015, rng);
+  FrameWalls far = plate_at(4.9, 0.0015, rng);
+  for (WallSample& s : far.samples) s.plane = 8;
+  walls.samples.insert(walls.samples.end(), far.samples.begin(), far.samples.end());
+  EXPECT_EQ(plates_cut_by_range(walls, o.cloud_max_range_m, o.point_sigma_m), std::vector<int>{8});
+  const std::vector<FramePatch> patches = frame_plate_patches(TunnelMap(), walls, 0.0, Eigen::Vector3d::UnitZ(), o);
+  ASSERT_EQ(patches.size(), 1u);
+  EXPECT_NEAR(patches[0].centroid.z(), 4.0, 0.02);
+  // No range, no cut.
+  EXPECT_TRUE(plates_cut_by_range(walls, INFINITY, o.point_sigma_m).empty());
+}
+
 // The right wall of a 0.84 m girder seen along it (camera frame: x right, z forward) from 0.6
 // to 3.6 m: edge bands above and below on the outer surface, the middle plate 6 mm inside.
 // The segmentation kept the near edge bands apart and grew the middle plate's plane over the
