@@ -74,6 +74,10 @@ void check_layout(const SimConfig& c) {
       throw ParameterError("simulator: frames = " + std::to_string(c.frames) +
                            " is fewer than the walk's " + std::to_string(c.walk->stops) +
                            " stops (each stop needs a frame)");
+    if (c.walk->look_back && c.walk->end_x_m < c.walk->start_x_m)
+      throw ParameterError("simulator: a walk that looks back must run forward (end_x_m below start_x_m)");
+    if (c.walk->look_back && plates == 0 && !sim::manhole_plate_x(c))
+      throw ParameterError("simulator: a walk that looks back needs plates to look back at (no diaphragms)");
   }
 }
 

@@ -56,7 +56,7 @@ std::vector<bool> look_back_stops(const std::vector<double>& stop_x, const std::
     const double from = plates_x[k];
     const bool last = k + 1 == plates_x.size();  // ends at the last stop, which may look back
     const double to = last ? stop_x.back() : plates_x[k + 1];
-    if (to <= from) continue;
+    if (to - from < kMinLookBackRoomM) continue;
     const double middle = 0.5 * (from + to);
     std::size_t nearest = stop_x.size();
     for (std::size_t g = 0; g < stop_x.size(); ++g)

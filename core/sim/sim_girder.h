@@ -37,7 +37,10 @@ double opening_weight(double distance_m);
 
 // Which of a walk's stops (stations `stop_x`, ascending) look back (SimWalk::look_back): in each
 // compartment that starts at a plate of `plates_x` (ascending) and ends at the next plate or
-// at the last stop, the stop nearest its middle. A compartment no stop stands in has none.
+// at the last stop, the stop nearest its middle. A compartment no stop stands in has none, nor
+// has one shorter than kMinLookBackRoomM (the gap between a diaphragm and a plate just behind
+// it: a camera there sees the plate a hand's width away).
+constexpr double kMinLookBackRoomM = 1.0;
 std::vector<bool> look_back_stops(const std::vector<double>& stop_x, const std::vector<double>& plates_x);
 
 }  // namespace tunnelmap::sim

@@ -419,6 +419,10 @@ TEST(SimGirderTest, TheStopNearestEachCompartmentsMiddlePastAPlateLooksBack) {
   // A compartment no stop stands in has none; the last stop may look back; no plates, none.
   EXPECT_EQ(sim::look_back_stops({1.0, 2.0, 9.0}, {4.0, 8.0}), (std::vector<bool>{false, false, true}));
   EXPECT_EQ(sim::look_back_stops(stops, {}), std::vector<bool>(stops.size(), false));
+  // A diaphragm with a plate 0.32 m behind it: no room to look back between them; past the
+  // plate, the stop nearest the middle of 4.32-7.0.
+  EXPECT_EQ(sim::look_back_stops({3.5, 4.1, 4.2, 5.0, 6.0, 7.0}, {4.0, 4.32}),
+            (std::vector<bool>{false, false, false, false, true, false}));
 }
 
 TEST(SimGirderTest, ALookBackStopSeesThePlateItClimbedThroughAndTheWallsJustPastIt) {
@@ -455,6 +459,14 @@ TEST(SimGirderTest, ALookBackStopSeesThePlateItClimbedThroughAndTheWallsJustPast
     EXPECT_LT(nearest_wall_x, plate + 0.6) << x;  // the forward frames start about 1 m past it
   }
   EXPECT_EQ(looked_back, 2);  // the stops at 6 m and 9.5 m
+  EXPECT_TRUE(sim_config_from_json(sim_config_to_json(c), "test").walk->look_back);
+  // A walk that looks back runs forward, past plates.
+  SimConfig backwards = c;
+  std::swap(backwards.walk->start_x_m, backwards.walk->end_x_m);
+  EXPECT_THROW(TunnelSimulator{backwards}, ParameterError);
+  SimConfig no_plates = c;
+  no_plates.diaphragm_spacing_m = 0.0;
+  EXPECT_THROW(TunnelSimulator{no_plates}, ParameterError);
 }
 
 // ---------------------------------------------------------------------------------------------
