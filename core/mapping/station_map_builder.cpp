@@ -83,7 +83,8 @@ void StationMapBuilder::frame_pieces(const TunnelMap& m, const FrameWalls& walls
     const LinePosition at = line_.locate(p, camera_node);
     const double outward[4] = {at.lateral_m, -at.lateral_m, at.vertical_m, -at.vertical_m};
     const int station = static_cast<int>(std::floor(at.station_m * inv_step));
-    Sum& s = sums[(static_cast<long long>(station) << 20) ^ ws.plane];
+    // Multiplied, not shifted: a station behind the first camera (a look back) is negative.
+    Sum& s = sums[static_cast<long long>(station) * (1LL << 20) ^ ws.plane];
     s.position += outward[ws.wall] * ws.points;
     s.own_position += own[ws.wall].dot(p - origin_) * ws.points;
     s.range += static_cast<double>(ws.point.z()) * ws.points;
