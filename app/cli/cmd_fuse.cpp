@@ -243,6 +243,8 @@ void run(const FuseOptions& o, CliContext& ctx) {
     }
     for (const std::string& line : unchecked_pose_notes(r.refinement, r.stations.girder.unchecked_plates))
       std::cout << line << "\n";
+    for (const std::string& line : plates_beyond_range_notes(r.stations.girder.plates_beyond_range))
+      std::cout << line << "\n";
     if (!truth.empty()) {
       std::printf("mesh vs ground truth: %.2f %% of vertices within 10 mm (median %.1f mm, "
                   "p95 %.1f mm)\n", 100.0 * acc.fraction_within, acc.median_m * 1000.0,

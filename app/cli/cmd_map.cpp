@@ -129,6 +129,7 @@ void print_summary(const StationMap& m, const PoseRefinement& refinement, const 
                   p.message.c_str());
   print_rescan(m);
   for (const std::string& line : notes.unchecked_poses) std::printf("%s\n", line.c_str());
+  for (const std::string& line : notes.plates_beyond_range) std::printf("%s\n", line.c_str());
   if (refinement.ran && refinement.given_poses_kept) {
     std::printf("poses kept as given: the structure agrees with them within its noise (chi-square gain %.1f, "
                 "threshold %.1f)\n", refinement.evidence.chi2_gain, refinement.evidence.threshold);

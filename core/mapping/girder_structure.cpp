@@ -292,6 +292,19 @@ void measure_manhole(const StationMap& map, const std::vector<const PlateView*>&
   d.manhole = m;
 }
 
+// A ring where the cross-section steps, or a small face across the axis, is no plate; nor is a
+// face that closes little of the section, unless it lies inside the section.
+bool closes_enough(const StationMap& map, const std::vector<const PlateView*>& group, double station_m,
+                   const GirderStructureOptions& o) {
+  const Section* sec = section_at(map, station_m);
+  const double box = sec && std::isfinite(sec->width_m) && std::isfinite(sec->height_m)
+                         ? sec->width_m * sec->height_m
+                         : kNaN;
+  const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
+  return plate_area(group, o.cell_m) >= needed ||
+         area_inside_both_sections(map, group, station_m, o.cell_m) >= o.min_plate_area_m2;
+}
+
 bool any_checked(const std::vector<const PlateView*>& group) {
   return std::any_of(group.begin(), group.end(), [](const PlateView* v) { return v->checked; });
 }
@@ -310,15 +323,7 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     Diaphragm d;
     d.station_m = median_of_measured(stations);
     d.area_m2 = plate_area_seen(group, o.cell_m);
-    const Section* sec = section_at(map, d.station_m);
-    const double box = sec && std::isfinite(sec->width_m) && std::isfinite(sec->height_m)
-                           ? sec->width_m * sec->height_m
-                           : kNaN;
-    // A ring where the cross-section steps, or a small face across the axis, is no plate; nor
-    // is a face that closes little of the section, unless it lies inside the section.
-    const double needed = std::isnan(box) ? o.min_plate_area_m2 : o.min_plate_fraction * box;
-    if (plate_area(group, o.cell_m) < needed && !(area_inside_both_sections(map, group, d.station_m, o.cell_m) >= o.min_plate_area_m2))
-      continue;
+    if (!closes_enough(map, group, d.station_m, o)) continue;
     if (!any_checked(group)) {
       unchecked.push_back({d.station_m, std::vector<int>(frames.begin(), frames.end())});
       continue;
@@ -334,6 +339,33 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
     d.closed = !d.manhole && seen_closed(map, group, d.station_m, o);
     if (d.closed) d.manhole_reason = "no opening: the plate was seen closed across the section";
     out.push_back(d);
+  }
+  return out;
+}
+
+// Whether a plate lies within `gap` of station `s`: mapped, or only unchecked views saw it.
+bool plate_known_near(const GirderStructure& g, double s, double gap) {
+  const auto near = [&](double station_m) { return std::abs(station_m - s) <= gap; };
+  return std::any_of(g.diaphragms.begin(), g.diaphragms.end(), [&](const Diaphragm& d) { return near(d.station_m); }) ||
+         std::any_of(g.unchecked_plates.begin(), g.unchecked_plates.end(),
+                     [&](const UncheckedPlate& p) { return near(p.station_m); });
+}
+
+// The plates that only views near the end of the depth range saw. Such a view places its plate
+// up to a few centimetres too near, within the gap that chains views of one plate.
+std::vector<PlateBeyondRange> plates_beyond_range(const StationMap& map, const std::vector<PlateView>& views,
+                                                  const GirderStructure& g, const GirderStructureOptions& o) {
+  std::vector<PlateBeyondRange> out;
+  for (const auto& group : group_views(views, o.plate_gap_m)) {
+    std::vector<double> stations;
+    std::set<int> frames;
+    for (const PlateView* v : group) {
+      frames.insert(v->frame);
+      for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
+    }
+    const double s = median_of_measured(stations);
+    if (plate_known_near(g, s, o.plate_gap_m) || !closes_enough(map, group, s, o)) continue;
+    out.push_back({s, std::vector<int>(frames.begin(), frames.end())});
   }
   return out;
 }
@@ -460,9 +492,11 @@ std::vector<double> transverse_plate_stations(const std::vector<PlateView>& view
 }
 
 GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
-                                       const GirderStructureOptions& options) {
+                                       const GirderStructureOptions& options,
+                                       const std::vector<PlateView>& range_cut_views) {
   GirderStructure g;
   g.diaphragms = find_diaphragms(map, views, options, g.unchecked_plates);
+  g.plates_beyond_range = plates_beyond_range(map, range_cut_views, g, options);
   mark_end_walls(map, options, g.diaphragms);
   g.compartments = find_compartments(map, g.diaphragms, options);
   g.centreline = find_centreline(map);

@@ -89,9 +89,17 @@ struct UncheckedPlate {
   std::vector<int> frames;
 };
 
+// A plate only views near the end of the depth range saw: the range cut drops its farthest
+// pixels first, which places it too near, so it is not mapped, and said.
+struct PlateBeyondRange {
+  double station_m = 0.0;  // as those views place it: too near, by up to a few centimetres
+  std::vector<int> frames;
+};
+
 struct GirderStructure {
   std::vector<Diaphragm> diaphragms;
   std::vector<UncheckedPlate> unchecked_plates;
+  std::vector<PlateBeyondRange> plates_beyond_range;
   std::vector<Compartment> compartments;
   std::vector<CentrelinePoint> centreline;
 };
@@ -108,7 +116,10 @@ std::vector<double> transverse_plate_stations(const std::vector<PlateView>& view
                                               const GirderStructureOptions& options = {});
 
 // `map` must be finished (stations, sections, frame). Plates are in station order.
+// `range_cut_views`: views the cloud's range cut placed too near (plates_cut_by_range); they
+// map no plate, and a plate only they saw goes to `plates_beyond_range`.
 GirderStructure build_girder_structure(const StationMap& map, const std::vector<PlateView>& views,
-                                       const GirderStructureOptions& options = {});
+                                       const GirderStructureOptions& options = {},
+                                       const std::vector<PlateView>& range_cut_views = {});
 
 }  // namespace tunnelmap

@@ -37,9 +37,36 @@ std::vector<std::string> unchecked_pose_notes(const PoseRefinement& refinement,
   return lines;
 }
 
+namespace {
+
+// "3", "3 and 4", "3, 4 and 9".
+std::string listed(const std::vector<int>& v) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == v.size() ? " and " : ", ") + std::to_string(v[i]);
+  return out;
+}
+
+}  // namespace
+
+// Such views lose the plate's farthest pixels first, so they place it too near; a nearer view
+// would place it.
+std::vector<std::string> plates_beyond_range_notes(const std::vector<PlateBeyondRange>& plates) {
+  std::vector<std::string> lines;
+  for (const PlateBeyondRange& p : plates) {
+    char station[32];
+    std::snprintf(station, sizeof station, "%.3f", p.station_m);
+    lines.push_back(std::string("the plate at about station ") + station + " m (" +
+                    (p.frames.size() == 1 ? "frame " : "frames ") + listed(p.frames) +
+                    ") was seen only near the end of the depth range, which places it too near, so it is not "
+                    "mapped; a frame nearer to it would map it");
+  }
+  return lines;
+}
 
 std::vector<std::string> MappingNotes::all() const {
   std::vector<std::string> lines = unchecked_poses;
+  lines.insert(lines.end(), plates_beyond_range.begin(), plates_beyond_range.end());
   if (!gravity.empty()) lines.push_back(gravity);
   return lines;
 }
@@ -48,6 +75,7 @@ MappingNotes mapping_notes(const MappedSequence& mapped, const std::vector<std::
                            const Eigen::Vector3d& world_up, double gravity_deg) {
   MappingNotes notes;
   notes.unchecked_poses = unchecked_pose_notes(mapped.refinement, mapped.stations.girder.unchecked_plates);
+  notes.plates_beyond_range = plates_beyond_range_notes(mapped.stations.girder.plates_beyond_range);
   if (mapped.refinement.ran)
     notes.gravity = gravity_noise_note(gravity_agreement(mapped.poses, gravity, world_up), gravity_deg);
   return notes;

@@ -45,6 +45,22 @@ double pixel_scatter_m(const Moments& m, double normal_variance) {
   return m.blocks > 0 ? std::sqrt(std::max(0.0, normal_variance) * m.weight / m.blocks) : 0.0;
 }
 
+// The same from the moments alone.
+double pixel_scatter_m(const Moments& m) {
+  const Eigen::Vector3d centroid = m.sum / m.weight;
+  const Eigen::Matrix3d cov = m.outer / m.weight - centroid * centroid.transpose();
+  return pixel_scatter_m(m, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues()[0]);
+}
+
+// Each plate across the axis that the frame saw, by plane id: kept or dropped whole, as a cut
+// per point biases it.
+std::map<int, Moments> plate_moments(const FrameWalls& walls) {
+  std::map<int, Moments> plates;
+  for (const WallSample& s : walls.samples)
+    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
+  return plates;
+}
+
 // One pixel's noise: the sensor model at the patch's farthest depth, or its scatter if larger
 // (the segmentation keeps the pixels near each plane, so the scatter alone falls short of the
 // noise on far plates).
@@ -199,28 +215,18 @@ std::vector<FramePatch> frame_wall_patches(const TunnelMap& map, const FrameWall
 }
 
 std::vector<int> plates_cut_by_range(const FrameWalls& walls, double cloud_max_range_m, double point_sigma_m) {
-  std::map<int, Moments> plates;  // plane id
-  for (const WallSample& s : walls.samples)
-    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
   std::vector<int> cut;
-  for (const auto& [plane, m] : plates) {
-    const Eigen::Vector3d centroid = m.sum / m.weight;
-    const Eigen::Matrix3d cov = m.outer / m.weight - centroid * centroid.transpose();
-    const double scatter = pixel_scatter_m(m, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues()[0]);
-    if (cut_by_range(m.max_depth_m, pixel_sigma_m(m, scatter, point_sigma_m), cloud_max_range_m)) cut.push_back(plane);
-  }
+  for (const auto& [plane, m] : plate_moments(walls))
+    if (cut_by_range(m.max_depth_m, pixel_sigma_m(m, pixel_scatter_m(m), point_sigma_m), cloud_max_range_m))
+      cut.push_back(plane);
   return cut;
 }
 
 std::vector<FramePatch> frame_plate_patches(const TunnelMap& map, const FrameWalls& walls, double camera_station_m,
                                             const Eigen::Vector3d& axis_cam, const SlamOptions& o) {
   const double cos_transverse = std::cos(kTransverseMaxAngleDeg * M_PI / 180.0);
-  std::map<int, Moments> plates;  // plane id
-  for (const WallSample& s : walls.samples)
-    // Kept or dropped whole, below: a cut per point biases it.
-    if (s.wall == kTransverseSample) plates[s.plane].add(s.point.cast<double>(), s.points);
   std::vector<FramePatch> out;
-  for (const auto& [plane, m] : plates) {
+  for (const auto& [plane, m] : plate_moments(walls)) {
     FramePatch patch;
     if (!reduce(m, o, patch) || patch.centroid.z() > o.max_plate_depth_m) continue;
     if (cut_by_range(m.max_depth_m, patch.pixel_sigma_m, o.cloud_max_range_m)) continue;

@@ -444,11 +444,9 @@ void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, cons
     const LinePosition at = line_.locate(T * camera_point.cast<double>(), camera_node);
     return Eigen::Vector3d(at.station_m, at.lateral_m, at.vertical_m);
   };
-  // A view the cloud's range cut places its plate too near; nearer views place it.
-  const std::vector<int> cut = plates_cut_by_range(walls, options_.cloud_max_range_m, options_.point_sigma_m);
   std::map<int, PlateView> by_plane;
   for (const WallSample& s : walls.samples) {
-    if (s.wall != kTransverseSample || std::binary_search(cut.begin(), cut.end(), s.plane)) continue;
+    if (s.wall != kTransverseSample) continue;
     PlateView& v = by_plane[s.plane];
     v.frame = frame;
     v.checked = !std::binary_search(unchecked_frames_.begin(), unchecked_frames_.end(), frame);
@@ -458,9 +456,13 @@ void StationMapBuilder::add_plate_views(int frame, const FrameWalls& walls, cons
   for (const RimPoint& r : walls.rims)
     if (const auto it = by_plane.find(r.plane); it != by_plane.end())
       it->second.rim.push_back(map_coordinates(r.point));
-  for (auto& [plane, v] : by_plane)
-    if (check == PlateCheck::AcrossOwnAxis || view_lies_across_axis(v, kTransverseMaxAngleDeg))
-      plates_.push_back(std::move(v));
+  // A view the cloud's range cut places its plate too near; nearer views place it.
+  const std::vector<int> cut = plates_cut_by_range(walls, options_.cloud_max_range_m, options_.point_sigma_m);
+  for (auto& [plane, v] : by_plane) {
+    if (check == PlateCheck::AcrossMapAxis && !view_lies_across_axis(v, kTransverseMaxAngleDeg)) continue;
+    const bool too_near = std::binary_search(cut.begin(), cut.end(), plane);
+    (too_near ? range_cut_plates_ : plates_).push_back(std::move(v));
+  }
 }
 
 namespace {
@@ -652,8 +654,8 @@ StationMap StationMapBuilder::finish(const std::vector<int>& pose_groups) const 
   }
   out.ok = true;
   out.status = "ok";
-  out.girder = build_girder_structure(out, plates_);
-  if (trim_beyond_end_walls(out, section_walls)) out.girder = build_girder_structure(out, plates_);
+  out.girder = build_girder_structure(out, plates_, {}, range_cut_plates_);
+  if (trim_beyond_end_walls(out, section_walls)) out.girder = build_girder_structure(out, plates_, {}, range_cut_plates_);
   note_plates_seen(out);
   for (std::size_t i = 0; i < out.sections.size(); ++i)
     add_section_maps(line_, section_walls[i].data(), out.sections[i].from_m, out.sections[i].to_m,

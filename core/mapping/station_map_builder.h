@@ -126,6 +126,7 @@ class StationMapBuilder {
 
   Pieces pieces_;                 // accepted frames' pieces
   std::vector<PlateView> plates_; // views of plates across the axis (accepted and undetected frames)
+  std::vector<PlateView> range_cut_plates_;  // such views the cloud's range cut placed too near
   std::map<int, std::vector<FrameDims>> frame_dims_;  // by station, accepted frames
   std::vector<ScanInput> scans_;  // every frame's map (camera frame) and pose
   std::vector<int> unchecked_frames_;  // sorted

@@ -433,6 +433,27 @@ TEST(GirderPlates, APlateOnlyPosesNothingChecksSawIsToldNotMapped) {
   EXPECT_EQ(transverse_plate_stations(views), (std::vector<double>{3.0, 5.0}));
 }
 
+TEST(GirderPlates, APlateOnlyViewsAtTheEdgeOfTheRangeSawIsToldNotMapped) {
+  // Closed plates at 3 and 5 m seen from near by frames 0-1. Frame 2 saw the one at 5 m, and
+  // one at 7 m, only near the end of its range, each placed 3 cm too near; frame 3 so saw a
+  // face at 9 m too small to be a plate.
+  const StationMap map = two_section_map();
+  const auto all = [](double, double) { return true; };
+  const auto small = [](double y, double z) { return std::abs(y) < 0.1 && std::abs(z) < 0.1; };
+  const std::vector<PlateView> near{face_view(0, 3.0, all), face_view(1, 3.0, all), face_view(0, 5.0, all),
+                                    face_view(1, 5.0, all)};
+  const std::vector<PlateView> cut{face_view(2, 4.97, all), face_view(2, 6.97, all), face_view(3, 8.97, small)};
+  const GirderStructure g = build_girder_structure(map, near, {}, cut);
+  ASSERT_EQ(g.diaphragms.size(), 2u);
+  EXPECT_NEAR(g.diaphragms[1].station_m, 5.0, 1e-9);  // the far view does not move it
+  EXPECT_EQ(g.diaphragms[1].seen_by_frames, 2);
+  ASSERT_EQ(g.plates_beyond_range.size(), 1u);
+  EXPECT_NEAR(g.plates_beyond_range[0].station_m, 6.97, 1e-9);
+  EXPECT_EQ(g.plates_beyond_range[0].frames, std::vector<int>{2});
+  EXPECT_TRUE(g.unchecked_plates.empty());
+  EXPECT_EQ(transverse_plate_stations(near), (std::vector<double>{3.0, 5.0}));
+}
+
 TEST(GirderPlates, ASmallManholeIsNotClosedByTheCellsTheSectionsEdgeCuts) {
   // Walls 2.6 cm into a 5 cm cell (a 0.952 x 1.252 m section), the plate seen to 2 cm past them,
   // and a 0.30 x 0.40 m manhole (0.094 m2). Every cell the box's edge cuts holds plate samples;

@@ -50,6 +50,22 @@ TEST(MappingNotes, NamesThePlatesOnlyAnUncheckedPoseSaw) {
   EXPECT_EQ(three[0], head + ", but for the plates it saw at stations 14.599, 18.250 and 22.000 m, which are not mapped");
 }
 
+TEST(MappingNotes, NamesEachPlateSeenOnlyNearTheEndOfTheRangeAfterThePoses) {
+  MappedSequence walk = walk_with_an_unchecked_stop();
+  walk.stations.girder.plates_beyond_range = {{-0.0218, {4}}, {41.2104, {2, 3, 5}}};
+  const MappingNotes notes = mapping_notes(walk, {}, Eigen::Vector3d::UnitZ(), 0.1);
+  ASSERT_EQ(notes.plates_beyond_range.size(), 2u);
+  const std::string tail =
+      " was seen only near the end of the depth range, which places it too near, so it is not mapped; a frame "
+      "nearer to it would map it";
+  EXPECT_EQ(notes.plates_beyond_range[0], "the plate at about station -0.022 m (frame 4)" + tail);
+  EXPECT_EQ(notes.plates_beyond_range[1], "the plate at about station 41.210 m (frames 2, 3 and 5)" + tail);
+  const std::vector<std::string> all = notes.all();
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0], notes.unchecked_poses[0]);
+  EXPECT_EQ(all[2], notes.plates_beyond_range[1]);
+}
+
 TEST(MappingNotes, AWalkNothingTiesOrThatWasNotRefinedHasNoSuchNote) {
   MappedSequence none_tied = walk_with_an_unchecked_stop();
   for (PoseCorrection& c : none_tied.refinement.groups) c.constrained.clear();

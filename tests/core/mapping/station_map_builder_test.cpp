@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "core/mapping/mapping_notes.h"
 #include "core/mapping/posed_sequence.h"
 #include "tests/support/family_girder.h"
 
@@ -95,14 +96,27 @@ TEST(StationMapPlates, APlateSeenOnlyAtTheEdgeOfTheRangeIsNotMappedTooNear) {
   const MappedSequence mapped = map_frames_as_posed(girder, frames);
   const std::vector<double> plates_x = girder.sim().diaphragms_x();
   int diaphragms = 0;
+  const Diaphragm* first = nullptr;
   for (const Diaphragm& d : mapped.stations.girder.diaphragms) {
     EXPECT_GT(d.point.x(), 1.0) << "a plate at " << d.point.x() << " m";
     if (std::abs(d.point.x() - plates_x.front()) < 0.5) {
       ++diaphragms;
+      first = &d;
       EXPECT_NEAR(d.point.x(), plates_x.front(), 0.005);
     }
   }
-  EXPECT_EQ(diaphragms, 1);
+  ASSERT_EQ(diaphragms, 1);
+  // The start wall is said to be left out, where those views put it: up to a few centimetres
+  // too near the camera that looked back at it, on this straight girder.
+  const std::vector<PlateBeyondRange>& far = mapped.stations.girder.plates_beyond_range;
+  ASSERT_EQ(far.size(), 1u);
+  const double start_wall_m = first->station_m - plates_x.front();
+  EXPECT_GT(far[0].station_m, start_wall_m);
+  EXPECT_LT(far[0].station_m, start_wall_m + 0.05);
+  for (int f : far[0].frames) EXPECT_EQ(girder.sim().pose_group(frames[static_cast<std::size_t>(f)]), back) << f;
+  const std::vector<std::string> notes = plates_beyond_range_notes(far);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("seen only near the end of the depth range"), std::string::npos) << notes[0];
 }
 
 }  // namespace
