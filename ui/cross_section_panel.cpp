@@ -13,6 +13,7 @@ namespace tunnelmap::ui {
 
 namespace {
 constexpr int kSliderSteps = 1000;
+constexpr std::size_t kMaxDrawnPoints = 20000;  // the cut is measured on all of the slab's points
 }
 
 CrossSectionPanel::CrossSectionPanel(QWidget* parent) : QWidget(parent) {
@@ -68,10 +69,12 @@ void CrossSectionPanel::set_station(double station_m) {
 }
 
 void CrossSectionPanel::set_frame(std::shared_ptr<const scene::ProcessedFrame> frame,
-                                  std::optional<double> design_width_m, std::optional<double> design_height_m) {
+                                  std::optional<double> design_width_m, std::optional<double> design_height_m,
+                                  double zone_gap_m) {
   frame_ = std::move(frame);
   design_w_ = design_width_m;
   design_h_ = design_height_m;
+  zone_gap_m_ = zone_gap_m;
   range_ = frame_ && frame_->result.map.detected ? visible_stations(frame_->result.map) : StationRange{};
   const bool usable = range_.to_m > range_.from_m;
   slider_->setEnabled(usable);
@@ -105,7 +108,7 @@ void CrossSectionPanel::recompute() {
   if (!frame_) return view_->clear();
   const FrameResult& r = frame_->result;
   view_->set_section(cross_section(r.cloud, r.planes, r.map, station(), thickness_->value() / 1000.0, design_w_,
-                                   design_h_));
+                                   design_h_, kMaxDrawnPoints, zone_gap_m_));
 }
 
 }  // namespace tunnelmap::ui

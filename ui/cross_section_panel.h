@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/tunnel/tunnel_options.h"
 #include "ui/cross_section_view.h"
 #include "ui/scene/processed_frame.h"
 
@@ -20,9 +21,11 @@ class CrossSectionPanel : public QWidget {
  public:
   explicit CrossSectionPanel(QWidget* parent = nullptr);
 
-  // The frame to cut; null clears. Keeps the station when it is still in view.
+  // The frame to cut; null clears. Keeps the station when it is still in view. `zone_gap_m`: the
+  // parameters' zone gap, with which the cut tells a wall's zones apart.
   void set_frame(std::shared_ptr<const scene::ProcessedFrame> frame, std::optional<double> design_width_m,
-                 std::optional<double> design_height_m);
+                 std::optional<double> design_height_m,
+                 double zone_gap_m = mm_to_m(tunnel_keys::zone_cluster_mm.default_value));
   void set_station(double station_m);
   double station() const;
   CrossSectionView* view() const { return view_; }
@@ -36,6 +39,7 @@ class CrossSectionPanel : public QWidget {
 
   std::shared_ptr<const scene::ProcessedFrame> frame_;
   std::optional<double> design_w_, design_h_;
+  double zone_gap_m_ = mm_to_m(tunnel_keys::zone_cluster_mm.default_value);
   StationRange range_;
   QSlider* slider_ = nullptr;
   QDoubleSpinBox* station_ = nullptr;

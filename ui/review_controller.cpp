@@ -119,7 +119,8 @@ void ReviewController::frame_shown() {
   const Parameters& p = ctx_.params->parameters();
   const std::optional<double> dw = positive(p.get(tunnel_keys::design_width_m)),
                               dh = positive(p.get(tunnel_keys::design_height_m));
-  cross_section_->set_frame(frames_->current_frame(), dw && dh ? dw : std::nullopt, dw && dh ? dh : std::nullopt);
+  cross_section_->set_frame(frames_->current_frame(), dw && dh ? dw : std::nullopt, dw && dh ? dh : std::nullopt,
+                            mm_to_m(p.get(tunnel_keys::zone_cluster_mm)));
   if (review_map_->pending_ahead && review_map_->pending_frame == frames_->last_outcome().frame_index) {
     cross_section_->set_station(*review_map_->pending_ahead);
     review_map_->pending_ahead.reset();
@@ -131,7 +132,7 @@ void ReviewController::forget() {
   review_frame_ = -1;
   profile_->clear();
   sections_->clear();
-  cross_section_->set_frame(nullptr, std::nullopt, std::nullopt);
+  cross_section_->set_frame(nullptr, std::nullopt, std::nullopt, mm_to_m(tunnel_keys::zone_cluster_mm.default_value));
   ctx_.view3d->clear_measurement();
   ctx_.depth_view->clear_measurement();
 }

@@ -1,10 +1,12 @@
 #include "core/tunnel/cross_section.h"
 
+#include "core/tunnel/zone_clustering.h"
 #include "core/util/median.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace tunnelmap {
 
@@ -90,19 +92,34 @@ namespace {
 
 constexpr std::size_t kMinCutWallPoints = 20;  // fewer: a few stray pixels, not a wall
 
-// Median `across` (side walls) or `up` (roof, floor) of one wall's points in the slab.
-std::optional<double> wall_position(const std::vector<SectionPoint>& points, WallClass wall) {
+// `across` (side walls) or `up` (roof, floor) of the wall's outer surface in the slab: its
+// planes there, each at the median of its points, clustered into zones as the frame's walls
+// are (core/tunnel/zone_clustering.h), and the outermost zone with the support of a wall. A
+// wall's middle plate lies a plate's thickness inside its edge bands, and far edge bands break
+// into planes of a dozen points each: the median of all its points fell on the middle plate,
+// 15 mm short of the width the frame and the map give on a girder with 7.5 mm plates.
+std::optional<double> wall_position(const std::vector<SectionPoint>& points, WallClass wall, double zone_gap_m) {
   const bool side = wall == WallClass::Left || wall == WallClass::Right;
-  std::vector<double> at;
+  const double outward = wall == WallClass::Left || wall == WallClass::Bottom ? -1.0 : 1.0;
+  std::map<int, std::vector<double>> by_plane;
   for (const SectionPoint& p : points)
-    if (p.cls == wall) at.push_back(side ? p.at.x() : p.at.y());
-  if (at.size() < kMinCutWallPoints) return std::nullopt;
-  return median_of_measured(std::move(at));
+    if (p.cls == wall) by_plane[p.plane].push_back(outward * (side ? p.at.x() : p.at.y()));
+  std::vector<ZonePosition> planes;
+  for (auto& [plane, at] : by_plane) {
+    const int n = static_cast<int>(at.size());
+    planes.push_back({median_of_measured(std::move(at)), n});
+  }
+  const int support = static_cast<int>(kMinCutWallPoints);
+  const std::vector<ZoneCluster> zones = cluster_zone_positions(planes, zone_gap_m, support);
+  const int outer = outermost_supported_cluster(zones, support);
+  if (outer < 0) return std::nullopt;
+  return outward * zones[static_cast<std::size_t>(outer)].offset_m;
 }
 
-void measure_cut(CrossSection& s) {
-  const auto left = wall_position(s.points, WallClass::Left), right = wall_position(s.points, WallClass::Right);
-  const auto bottom = wall_position(s.points, WallClass::Bottom), top = wall_position(s.points, WallClass::Top);
+void measure_cut(CrossSection& s, double zone_gap_m) {
+  const auto at = [&](WallClass wall) { return wall_position(s.points, wall, zone_gap_m); };
+  const auto left = at(WallClass::Left), right = at(WallClass::Right);
+  const auto bottom = at(WallClass::Bottom), top = at(WallClass::Top);
   if (left && right) s.cut_width_m = *right - *left;
   if (bottom && top) s.cut_height_m = *top - *bottom;
 }
@@ -111,7 +128,7 @@ void measure_cut(CrossSection& s) {
 
 CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& planes, const TunnelMap& map,
                            double station_m, double half_thickness_m, std::optional<double> design_width_m,
-                           std::optional<double> design_height_m, std::size_t max_points) {
+                           std::optional<double> design_height_m, std::size_t max_points, double zone_gap_m) {
   CrossSection out;
   out.station_m = station_m;
   out.half_thickness_m = half_thickness_m;
@@ -126,11 +143,14 @@ CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& pla
     sp.at = {d.dot(f.right), d.dot(f.up)};
     if (labelled) {
       const int id = planes.labels[i];
-      if (id > 0 && static_cast<std::size_t>(id) <= map.plane_classes.size())
+      if (id > 0 && static_cast<std::size_t>(id) <= map.plane_classes.size()) {
         sp.cls = map.plane_classes[static_cast<std::size_t>(id - 1)];
+        sp.plane = id;
+      }
     }
     out.points.push_back(sp);
   }
+  measure_cut(out, zone_gap_m);  // on every point of the slab: a thinned plane may fall below a wall's support
   if (max_points > 0 && out.points.size() > max_points) {
     const double step = static_cast<double>(out.points.size()) / static_cast<double>(max_points);
     std::vector<SectionPoint> kept;
@@ -138,7 +158,6 @@ CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& pla
     for (std::size_t k = 0; k < max_points; ++k) kept.push_back(out.points[static_cast<std::size_t>(k * step)]);
     out.points.swap(kept);
   }
-  measure_cut(out);
   out.fitted = fitted_rect(map, f);
   if (!out.fitted) out.no_fit_reason = no_fit_reason(map);
   if (out.fitted) {

@@ -11,6 +11,7 @@
 #include "core/frame/organized_cloud.h"
 #include "core/planes/plane_segment.h"
 #include "core/tunnel/tunnel_map.h"
+#include "core/tunnel/tunnel_options.h"
 
 namespace tunnelmap {
 
@@ -25,6 +26,7 @@ struct SectionRect {
 struct SectionPoint {
   Eigen::Vector2d at;                        // (across, up)
   WallClass cls = WallClass::Unassigned;     // of the plane the pixel belongs to, if any
+  int plane = 0;                             // that plane's label (0: none)
 };
 
 struct CrossSection {
@@ -37,8 +39,10 @@ struct CrossSection {
   // Where the fitted rectangle's width and height come from (the map's sources): a dimension
   // filled from the design equals it by construction and is no deviation from it.
   DimensionSource width_source = DimensionSource::Unseen, height_source = DimensionSource::Unseen;
-  // The cut's own size, from the slab's wall points (the median position of each wall's
-  // points); empty where a wall has too few points in the slab. The fitted rectangle describes
+  // The cut's own size, from the slab's wall points: per wall, the outermost of its planes in
+  // the slab (each at the median of its points there), the wall's outer surface as the frame's
+  // walls and the map measure it, not a middle plate a plate's thickness inside its edge bands;
+  // empty where a wall has too few points in the slab. The fitted rectangle describes
   // the frame's walls as a whole, which may lie across a change of section.
   std::optional<double> cut_width_m, cut_height_m;
 };
@@ -51,11 +55,13 @@ StationRange visible_stations(const TunnelMap& map);
 
 // `map` in the camera frame of `cloud` (the per-frame result); `planes` may be empty (points are
 // then Unassigned). No fitted rectangle when the map is not detected. At most `max_points`
-// points are kept (evenly thinned) so a drawing stays fast.
+// points are kept (evenly thinned) so a drawing stays fast. `zone_gap_m`: a wall's planes in the
+// slab closer than this are one zone (`tunnel.zone_cluster_mm`, as the frame's walls take it).
 CrossSection cross_section(const OrganizedCloud& cloud, const PlaneSegments& planes, const TunnelMap& map,
                            double station_m, double half_thickness_m,
                            std::optional<double> design_width_m = std::nullopt,
                            std::optional<double> design_height_m = std::nullopt,
-                           std::size_t max_points = 20000);
+                           std::size_t max_points = 20000,
+                           double zone_gap_m = mm_to_m(tunnel_keys::zone_cluster_mm.default_value));
 
 }  // namespace tunnelmap

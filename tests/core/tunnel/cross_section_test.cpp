@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "core/pipeline/pipeline.h"
+#include "core/sim/tunnel_simulator.h"
+#include "core/util/build_paths.h"
 #include "core/tunnel/cross_section.h"
 #include "tests/support/synthetic_scene.h"
 
@@ -144,6 +146,35 @@ TEST(CrossSection, TheCutMeasuresItsOwnWallsAcrossAChangeOfSection) {
   // One of the two cuts is not the frame's size: the fitted rectangle cannot stand for both.
   ASSERT_TRUE(before.fitted.has_value());
   EXPECT_GT(std::max(std::abs(before.fitted->width() - 0.84), std::abs(before.fitted->width() - 0.78)), 0.02);
+}
+
+// The field preset's girder (0.84 x 1.20 m): each wall a middle plate 7.5 mm inside its edge
+// bands. Near the camera the cut measures the walls' outer surface, as the frame's rectangle and
+// the map do (the median of all the wall's points lay on the middle plates, 15 mm narrow). At 2 m
+// one side wall's edge band breaks into planes too small to count, and the cut, measured in the
+// slab alone, keeps that wall's middle plate: within a plate's thickness.
+TEST(CrossSection, TheCutOfAZonedWallIsItsOuterSurface) {
+  SimConfig config = SimConfig::from_preset("field");
+  config.frames = 1;
+  const TunnelSimulator sim(config);
+  Parameters params;
+  params.load_json_file(std::string(TUNNELMAP_SOURCE_DIR) + "/resources/presets/field.json");
+  Pipeline pipeline(params);
+  const FrameResult r = pipeline.run(sim.render(0).frame);
+  ASSERT_TRUE(r.map.detected) << r.map.reason;
+  const auto cut_at = [&](double station) {
+    return cross_section(r.cloud, r.planes, r.map, station, 0.025, std::nullopt, std::nullopt, 20000,
+                         mm_to_m(params.get(tunnel_keys::zone_cluster_mm)));
+  };
+  for (const double station : {1.2, 1.5}) {
+    const CrossSection s = cut_at(station);
+    ASSERT_TRUE(s.fitted && s.cut_width_m) << station;
+    EXPECT_NEAR(*s.cut_width_m, config.width_m, 0.003) << station;
+    EXPECT_NEAR(*s.cut_width_m, s.fitted->width(), 0.003) << station;
+  }
+  const CrossSection far = cut_at(2.0);
+  ASSERT_TRUE(far.cut_width_m);
+  EXPECT_NEAR(*far.cut_width_m, config.width_m, 0.0075);
 }
 
 TEST(CrossSection, ACutWithoutAWallHasNoSizeThere) {
