@@ -57,7 +57,7 @@ MapSectionsPanel::MapSectionsPanel(QWidget* parent) : QWidget(parent) {
   summary_->setWordWrap(true);
   tree_ = new QTreeWidget(this);
   tree_->setColumnCount(kColumns);
-  tree_->setHeaderLabels({tr("Station (m)"), tr("Width (m)"), tr("Height (m)"), tr("Off design (mm)"), tr("Frames")});
+  tree_->setHeaderLabels({tr("Station (m)"), tr("Width (m)"), tr("Height (m)"), tr("Off design (mm) / detail"), tr("Frames")});
   tree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
   tree_->header()->setStretchLastSection(false);  // the frame counts stay under their header
   tree_->setRootIsDecorated(true);
