@@ -19,7 +19,9 @@ constexpr std::size_t kMaxDrawnPoints = 20000;  // the cut is measured on all of
 CrossSectionPanel::CrossSectionPanel(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   auto* row = new QHBoxLayout;
-  row->addWidget(new QLabel(tr("Station")));
+  // Ahead of the shown frame's camera, not the map's station: the map's stations run from the
+  // first frame's camera, and a station chosen on the profile shows a frame that sees it.
+  row->addWidget(new QLabel(tr("Ahead")));
   slider_ = new QSlider(Qt::Horizontal);
   slider_->setRange(0, kSliderSteps);
   slider_->setMinimumWidth(60);
@@ -92,7 +94,7 @@ void CrossSectionPanel::update_range_label() {
     range_label_->setText(tr("No tunnel in this frame: the section shows its points only"));
     return;
   }
-  const QString range = tr("The frame sees stations %1 to %2 m").arg(range_.from_m, 0, 'f', 2).arg(range_.to_m, 0, 'f', 2);
+  const QString range = tr("The frame's walls run from %1 to %2 m ahead").arg(range_.from_m, 0, 'f', 2).arg(range_.to_m, 0, 'f', 2);
   const double s = station();
   range_label_->setText(s >= range_.from_m && s <= range_.to_m
                             ? range

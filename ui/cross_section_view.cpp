@@ -122,7 +122,7 @@ QString deviation(std::optional<double> cut, double fitted, DimensionSource sour
 // The size is the cut's own (its walls' points in the slab); the frame's fitted rectangle, drawn
 // too, is named as such: across a change of section the two differ.
 QString CrossSectionView::caption() const {
-  QString s = tr("station %1 m, slab \u00b1%2 mm, %3 points")
+  QString s = tr("%1 m ahead, slab \u00b1%2 mm, %3 points")
                   .arg(section_.station_m, 0, 'f', 2)
                   .arg(section_.half_thickness_m * 1000.0, 0, 'f', 0)
                   .arg(section_.points.size());

@@ -85,6 +85,7 @@ class CrossSectionTest : public QObject {
     QCOMPARE(std::round(s.fitted->height() * 1000), 800.0);
     QVERIFY(s.points.size() > 100);
     const QString caption = panel.view()->caption();
+    QVERIFY2(caption.startsWith("1.50 m ahead, slab"), qPrintable(caption));  // of the camera, not a map station
     QVERIFY2(caption.contains("cut: width 1.000 m, height 0.800 m"), qPrintable(caption));
     QVERIFY2(caption.contains("frame fit: 1.000 \u00d7 0.800 m"), qPrintable(caption));
     QVERIFY2(caption.contains("width 20.0 mm, height 20.0 mm"), qPrintable(caption));
