@@ -32,7 +32,7 @@ CrossSectionPanel::CrossSectionPanel(QWidget* parent) : QWidget(parent) {
   station_->setSingleStep(0.05);
   station_->setSuffix(tr(" m"));
   station_->setRange(0.0, 20.0);
-  station_->setValue(1.5);  // near enough for dense points on all four walls
+  station_->setValue(kDefaultAheadM);
   row->addWidget(station_);
   layout->addLayout(row);
   auto* slab_row = new QHBoxLayout;
@@ -56,7 +56,8 @@ CrossSectionPanel::CrossSectionPanel(QWidget* parent) : QWidget(parent) {
   connect(slider_, &QSlider::valueChanged, this, [this](int v) {
     set_station(range_.from_m + (range_.to_m - range_.from_m) * v / kSliderSteps);
   });
-  connect(station_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double) {
+  connect(station_, qOverload<double>(&QDoubleSpinBox::valueChanged), this, [this](double v) {
+    wanted_m_ = v;
     recompute();
     emit stationChanged(station());
   });
@@ -80,9 +81,11 @@ void CrossSectionPanel::set_frame(std::shared_ptr<const scene::ProcessedFrame> f
   range_ = frame_ && frame_->result.map.detected ? visible_stations(frame_->result.map) : StationRange{};
   const bool usable = range_.to_m > range_.from_m;
   slider_->setEnabled(usable);
-  if (usable && (station() < range_.from_m || station() > range_.to_m)) {
+  // The distance last asked for, as near as this frame's walls allow: a frame whose walls end
+  // short of it does not move the cut for the frames after it.
+  if (usable) {
     const QSignalBlocker block(station_);
-    station_->setValue(std::clamp(1.5, range_.from_m, range_.to_m));
+    station_->setValue(std::clamp(wanted_m_, range_.from_m, range_.to_m));
   }
   recompute();
 }

@@ -19,9 +19,12 @@ namespace tunnelmap::ui {
 class CrossSectionPanel : public QWidget {
   Q_OBJECT
  public:
+  static constexpr double kDefaultAheadM = 1.5;  // near enough for dense points on all four walls
+
   explicit CrossSectionPanel(QWidget* parent = nullptr);
 
-  // The frame to cut; null clears. Keeps the station when it is still in view. `zone_gap_m`: the
+  // The frame to cut; null clears. Cuts at the distance last asked for (the spin box, the slider,
+  // set_station), as near as the frame's walls reach. `zone_gap_m`: the
   // parameters' zone gap, with which the cut tells a wall's zones apart.
   void set_frame(std::shared_ptr<const scene::ProcessedFrame> frame, std::optional<double> design_width_m,
                  std::optional<double> design_height_m,
@@ -38,6 +41,7 @@ class CrossSectionPanel : public QWidget {
   void update_range_label();
 
   std::shared_ptr<const scene::ProcessedFrame> frame_;
+  double wanted_m_ = kDefaultAheadM;  // the distance the user (or a map station) asked for
   std::optional<double> design_w_, design_h_;
   double zone_gap_m_ = mm_to_m(tunnel_keys::zone_cluster_mm.default_value);
   StationRange range_;

@@ -64,7 +64,8 @@ std::string pair_reason(const TunnelMap& map, WallClass a, WallClass b, bool siz
   if (seen_a && seen_b) return "";
   if (!seen_a && !seen_b) return std::string("neither ") + names[0] + " nor " + names[1] + " seen";
   if (size_known) return "";
-  return std::string("only the ") + (seen_a ? names[0] : names[1]) + " seen and the " + size + " unknown";
+  // Named by the wall missing: "only the floor seen" read as if the side walls were not seen either.
+  return std::string("the ") + (seen_a ? names[1] : names[0]) + " not seen and the " + size + " unknown";
 }
 
 // Why a frame has no rectangle to draw: no tunnel, a pair of walls neither seen nor sized, or a

@@ -169,6 +169,28 @@ class CrossSectionTest : public QObject {
     QVERIFY(!slider->isEnabled());
     QVERIFY(!panel.view()->section().fitted.has_value());
   }
+
+  // A frame whose walls end 1.0 m ahead cuts there; the next frame cuts at the distance asked
+  // for again, not where the short one left it.
+  void aFrameWhoseWallsEndShortDoesNotMoveTheCutOfTheNext() {
+    auto short_view = std::make_shared<tunnelmap::scene::ProcessedFrame>(*tunnel());
+    tunnelmap::TunnelMap& m = short_view->result.map;
+    const double base = m.axis_point.dot(m.axis_dir), max = m.extent_max_m;
+    m.extent_max_m = 1.0 - base;
+    if (std::abs(tunnelmap::visible_stations(m).to_m - 1.0) > 1e-9) m.extent_max_m = max, m.extent_min_m = -1.0 - base;
+    QVERIFY(std::abs(tunnelmap::visible_stations(m).to_m - 1.0) < 1e-9);
+    CrossSectionPanel panel;
+    panel.show();
+    for (const double wanted : {CrossSectionPanel::kDefaultAheadM, 2.0}) {
+      panel.set_frame(tunnel(), std::nullopt, std::nullopt);
+      panel.set_station(wanted);
+      panel.set_frame(short_view, std::nullopt, std::nullopt);
+      QCOMPARE(panel.station(), 1.0);
+      panel.set_frame(tunnel(), std::nullopt, std::nullopt);
+      QCOMPARE(panel.station(), wanted);
+      QCOMPARE(panel.view()->section().station_m, wanted);
+    }
+  }
 };
 
 // 20 stations of 0.1 m, two sections; design 0.82 x 1.30 m, 10 mm tolerance; the width reads

@@ -101,7 +101,7 @@ TEST(CrossSection, AMissingWallIsPlacedFromTheKnownSize) {
   map.height_source = DimensionSource::Unseen;
   const CrossSection no_height = cross_section(t.result.cloud, t.result.planes, map, 2.0, 0.05);
   EXPECT_FALSE(no_height.fitted.has_value());
-  EXPECT_EQ(no_height.no_fit_reason, "only the floor seen and the height unknown");
+  EXPECT_EQ(no_height.no_fit_reason, "the roof not seen and the height unknown");
   // A size known (from context) does not place a pair of walls neither of which was seen.
   map.height_source = DimensionSource::Context;
   map.wall(WallClass::Bottom).found = false;
