@@ -39,10 +39,10 @@ struct CrossSection {
   // Where the fitted rectangle's width and height come from (the map's sources): a dimension
   // filled from the design equals it by construction and is no deviation from it.
   DimensionSource width_source = DimensionSource::Unseen, height_source = DimensionSource::Unseen;
-  // The cut's own size, from the slab's wall points: per wall, the outermost of its planes in
-  // the slab (each at the median of its points there), the wall's outer surface as the frame's
-  // walls and the map measure it, not a middle plate a plate's thickness inside its edge bands;
-  // empty where a wall has too few points in the slab. The fitted rectangle describes
+  // The cut's own size, from the slab's wall points: per wall, its planes in the slab (each at
+  // the median of its points there) clustered into zones, and the outermost zone with a wall's
+  // support: the wall's outer surface as the frame's walls and the map measure it, not a middle
+  // plate a plate's thickness inside its edge bands; empty where a wall has too few points. The fitted rectangle describes
   // the frame's walls as a whole, which may lie across a change of section.
   std::optional<double> cut_width_m, cut_height_m;
 };
