@@ -292,6 +292,20 @@ void measure_manhole(const StationMap& map, const std::vector<const PlateView*>&
   d.manhole = m;
 }
 
+// A plate's station: the median of its views' samples along the axis.
+double median_station(const std::vector<const PlateView*>& group) {
+  std::vector<double> stations;
+  for (const PlateView* v : group)
+    for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
+  return median_of_measured(stations);
+}
+
+std::set<int> frames_of(const std::vector<const PlateView*>& group) {
+  std::set<int> frames;
+  for (const PlateView* v : group) frames.insert(v->frame);
+  return frames;
+}
+
 // A ring where the cross-section steps, or a small face across the axis, is no plate; nor is a
 // face that closes little of the section, unless it lies inside the section.
 bool closes_enough(const StationMap& map, const std::vector<const PlateView*>& group, double station_m,
@@ -314,14 +328,9 @@ std::vector<Diaphragm> find_diaphragms(const StationMap& map, const std::vector<
                                        const GirderStructureOptions& o, std::vector<UncheckedPlate>& unchecked) {
   std::vector<Diaphragm> out;
   for (const auto& group : group_views(views, o.plate_gap_m)) {
-    std::vector<double> stations, weights;
-    std::set<int> frames;
-    for (const PlateView* v : group) {
-      frames.insert(v->frame);
-      for (std::size_t i = 0; i < v->samples.size(); ++i) stations.push_back(v->samples[i].x());
-    }
+    const std::set<int> frames = frames_of(group);
     Diaphragm d;
-    d.station_m = median_of_measured(stations);
+    d.station_m = median_station(group);
     d.area_m2 = plate_area_seen(group, o.cell_m);
     if (!closes_enough(map, group, d.station_m, o)) continue;
     if (!any_checked(group)) {
@@ -357,14 +366,9 @@ std::vector<PlateBeyondRange> plates_beyond_range(const StationMap& map, const s
                                                   const GirderStructure& g, const GirderStructureOptions& o) {
   std::vector<PlateBeyondRange> out;
   for (const auto& group : group_views(views, o.plate_gap_m)) {
-    std::vector<double> stations;
-    std::set<int> frames;
-    for (const PlateView* v : group) {
-      frames.insert(v->frame);
-      for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
-    }
-    const double s = median_of_measured(stations);
+    const double s = median_station(group);
     if (plate_known_near(g, s, o.plate_gap_m) || !closes_enough(map, group, s, o)) continue;
+    const std::set<int> frames = frames_of(group);
     out.push_back({s, std::vector<int>(frames.begin(), frames.end())});
   }
   return out;
@@ -482,10 +486,7 @@ std::vector<double> transverse_plate_stations(const std::vector<PlateView>& view
   std::vector<double> out;
   for (const auto& group : group_views(views, options.plate_gap_m)) {
     if (plate_area(group, options.cell_m) < options.min_plate_area_m2 || !any_checked(group)) continue;
-    std::vector<double> stations;
-    for (const PlateView* v : group)
-      for (const Eigen::Vector3d& p : v->samples) stations.push_back(p.x());
-    out.push_back(median_of_measured(stations));
+    out.push_back(median_station(group));
   }
   std::sort(out.begin(), out.end());
   return out;
